@@ -1,0 +1,2 @@
+// SPDX-License-Identifier: MIT
+#include "physics/world.h"

@@ -1,0 +1,3 @@
+# SPDX-License-Identifier: MIT
+set(RISE_TEST_CORE_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/test_placeholder_core.cpp)
