@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
 set(RISE_TEST_CORE_SOURCES
-  ${CMAKE_CURRENT_LIST_DIR}/test_placeholder_core.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_biped_def.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_two_bone_ik.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_point_mass_plan.cpp)
