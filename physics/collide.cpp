@@ -18,6 +18,7 @@
 #include <glm/mat3x3.hpp>
 
 #include <cmath>
+#include <initializer_list>
 #include <utility>
 
 namespace rise::physics {
@@ -39,7 +40,10 @@ constexpr float kFaceRelTolerance = 0.98f;
 constexpr float kEdgeRelTolerance = 0.90f;
 constexpr float kAbsTolerance = 0.5e-3f;  // metres
 
-// Id layout for box-box points. Plane-box ids are plain vertex indices (0..7).
+// Box-box id layout. Face contact: bits 0-2 and 3-5 the clip labels `out` and
+// `in` (see ClipVertex), 6-8 the incident face, 9-11 the reference face, bit 12
+// set when the reference face is B's. Edge-edge: bits 0-3 B's edge, 4-7 A's
+// edge, bit 13 set. Plane-box ids are plain vertex numbers (0..7).
 constexpr uint32_t kIdReferenceIsB = 1u << 12;
 constexpr uint32_t kIdEdgeEdge = 1u << 13;
 
@@ -51,6 +55,8 @@ struct OrientedBox {
 
 OrientedBox MakeBox(const BoxShape& shape, const Transform& transform) {
   RISE_ASSERT(shape.halfExtents.x > 0.0f && shape.halfExtents.y > 0.0f && shape.halfExtents.z > 0.0f);
+  // A non-unit quaternion would scale the axes and every distance measured along them.
+  RISE_ASSERT(std::fabs(glm::dot(transform.rotation, transform.rotation) - 1.0f) < 1e-3f);
   return {transform.position, glm::mat3_cast(transform.rotation), shape.halfExtents};
 }
 
@@ -149,7 +155,6 @@ void ReduceToManifold(const Candidate* candidates, int count, const glm::vec3& n
     mp.id = candidates[i].id;
   }
 }
-
 
 // The four corners of face `face`, counter-clockwise seen from outside the box.
 // Corner k and the edge from corner k to corner k+1 keep their numbers whatever
@@ -285,7 +290,10 @@ void ClosestPointsOfSegments(const glm::vec3& centerA, const glm::vec3& dirA, fl
   const float b = glm::dot(dirA, dirB);
   const float c = glm::dot(dirA, r);
   const float f = glm::dot(dirB, r);
-  const float denom = 1.0f - b * b;  // > 0: parallel pairs never get here
+  // |dirA x dirB|^2 rather than 1 - b^2, which cancels for nearly parallel edges;
+  // exactly parallel ones never get here.
+  const glm::vec3 cross = glm::cross(dirA, dirB);
+  const float denom = glm::dot(cross, cross);
   float s = glm::clamp((b * f - c) / denom, -halfA, halfA);
   float t = b * s + f;
   if (t < -halfB || t > halfB) {
@@ -300,6 +308,7 @@ void ClosestPointsOfSegments(const glm::vec3& centerA, const glm::vec3& dirA, fl
 
 Manifold CollidePlaneBox(const PlaneShape& plane, const BoxShape& box, const Transform& boxTransform,
                          float speculativeDistance) {
+  RISE_ASSERT(std::fabs(glm::dot(plane.normal, plane.normal) - 1.0f) < 1e-3f);
   const OrientedBox b = MakeBox(box, boxTransform);
   Manifold manifold;
   manifold.normal = plane.normal;
@@ -328,14 +337,10 @@ Manifold CollideBoxes(const BoxShape& boxA, const Transform& transformA, const B
   const float reach = glm::length(a.half) + glm::length(b.half) + speculativeDistance;
   if (glm::dot(d, d) > reach * reach) return manifold;
 
-  // c[i][j] = dot(A axis i, B axis j): B's axes in A's frame.
-  float c[3][3];
+  // absC[i][j] = |dot(A axis i, B axis j)|: how much of B's axis j projects on A's axis i.
   float absC[3][3];
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      c[i][j] = glm::dot(a.axes[i], b.axes[j]);
-      absC[i][j] = std::fabs(c[i][j]);
-    }
+    for (int j = 0; j < 3; ++j) absC[i][j] = std::fabs(glm::dot(a.axes[i], b.axes[j]));
   }
 
   float faceSepA = -INFINITY;
@@ -368,9 +373,12 @@ Manifold CollideBoxes(const BoxShape& boxA, const Transform& transformA, const B
   glm::vec3 edgeNormal{0.0f};
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
-      const float sinSq = 1.0f - c[i][j] * c[i][j];
+      // The length comes from the cross product itself: 1 - c^2 cancels
+      // catastrophically in float exactly when the edges are nearly parallel.
+      const glm::vec3 cross = glm::cross(a.axes[i], b.axes[j]);
+      const float sinSq = glm::dot(cross, cross);
       if (sinSq < kParallelSinSq) continue;
-      const glm::vec3 axis = glm::cross(a.axes[i], b.axes[j]) / std::sqrt(sinSq);
+      const glm::vec3 axis = cross / std::sqrt(sinSq);
       float radius = 0.0f;
       for (int k = 0; k < 3; ++k) {
         radius += a.half[k] * std::fabs(glm::dot(axis, a.axes[k])) + b.half[k] * std::fabs(glm::dot(axis, b.axes[k]));

@@ -9,7 +9,8 @@
 //   can stop an approaching body before it touches (speculative contacts).
 // - Each point carries a feature id built from the features (vertex, edge,
 //   face) that made it, so the same physical point keeps its id from step to
-//   step and its impulse can warm-start the next step.
+//   step and its impulse can warm-start the next step. Ids within one manifold
+//   are distinct.
 #pragma once
 
 #include <glm/gtc/quaternion.hpp>
