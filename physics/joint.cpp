@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: MIT
+// Joint solver shared by all joint types: point part, axis locks, limits and the PD motor.
+//
+// Every joint is the point part plus angular rows produced by its type (joint_*.cpp):
+//   point:  C = pB - pA (3 rows), see SolvePointPart.
+//   lock:   C = position about a world axis u, Cdot = u . (wB - wA), J = [0, -u, 0, u].
+//   limit:  C = angle - lower >= 0 and C = upper - angle >= 0 with J = +-[0, -u, 0, u].
+//   motor:  the rotation vector e of (qB frameB) conj(qA frameA target), projected on the free
+//           axes, c_i = u_i . e, Cdot_i = u_i . (wB - wA); solved as an implicit PD spring.
+// Solve order within a joint: motor, limits, locks, point, so the hard parts have the last word.
+// Angular rows are rebuilt from the current poses at every warm start and solve: the axes turn
+// during a step and the limits must see the angle the sub-step actually reached.
+#include "physics/joint.h"
+
+#include "base/assert.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace rise::physics {
+
+namespace {
+
+AngularRows RowsFor(const Joint& joint, const Body& a, const Body& b) {
+  switch (joint.type) {
+    case JointType::kBall:
+      return BallRows(joint, a, b);
+    case JointType::kHinge:
+      return HingeRows(joint, a, b);
+    case JointType::kUniversal:
+      return UniversalRows(joint, a, b);
+  }
+  RISE_ASSERT_MSG(false, "unknown joint type");
+  return {};
+}
+
+// Rotation vector (axis * angle, shortest way round) of a unit quaternion.
+glm::vec3 RotationVector(glm::quat q) {
+  if (q.w < 0.0f) q = -q;
+  const glm::vec3 v(q.x, q.y, q.z);
+  const float s = glm::length(v);
+  if (s < 1e-6f) return 2.0f * v;
+  return (2.0f * std::atan2(s, q.w) / s) * v;
+}
+
+// Sum of J^T lambda of all angular rows, as one world impulse on B.
+glm::vec3 AngularImpulse(const Joint& joint, const AngularRows& rows) {
+  glm::vec3 impulse(0.0f);
+  for (int i = 0; i < rows.lockCount; ++i) impulse += joint.lockImpulse[i] * rows.lockAxis[i];
+  for (int i = 0; i < rows.limitCount; ++i) impulse += (joint.lowerImpulse[i] - joint.upperImpulse[i]) * rows.limitAxis[i];
+  for (int i = 0; i < rows.motorCount; ++i) impulse += joint.motorImpulse[i] * rows.motorAxis[i];
+  return impulse;
+}
+
+}  // namespace
+
+Joint MakeJoint(const JointDef& def, const Body& a, const Body& b) {
+  Joint joint;
+  joint.type = def.type;
+  joint.bodyA = def.bodyA.index;
+  joint.bodyB = def.bodyB.index;
+  const glm::quat frame = glm::normalize(def.frame);
+  joint.localAnchorA = glm::conjugate(a.transform.rotation) * (def.anchor - a.transform.position);
+  joint.localAnchorB = glm::conjugate(b.transform.rotation) * (def.anchor - b.transform.position);
+  joint.localFrameA = glm::normalize(glm::conjugate(a.transform.rotation) * frame);
+  joint.localFrameB = glm::normalize(glm::conjugate(b.transform.rotation) * frame);
+  joint.enableLimits = def.enableLimits;
+  joint.twistLimits = def.twistLimits;
+  joint.swingCone = def.swingCone;
+  joint.swingYLimits = def.swingYLimits;
+  joint.swingZLimits = def.swingZLimits;
+  joint.motor = def.motor;
+  return joint;
+}
+
+glm::quat RelativeRotation(const Joint& joint, const Body& a, const Body& b) {
+  return glm::conjugate(a.transform.rotation * joint.localFrameA) * (b.transform.rotation * joint.localFrameB);
+}
+
+float AnchorSeparation(const Joint& joint, const Body& a, const Body& b) {
+  const glm::vec3 pA = a.transform.position + a.transform.rotation * joint.localAnchorA;
+  const glm::vec3 pB = b.transform.position + b.transform.rotation * joint.localAnchorB;
+  return glm::length(pB - pA);
+}
+
+void PrepareJoint(Joint& joint, const SolverContext& context) {
+  if (!context.warmStart) {
+    joint.linearImpulse = glm::vec3(0.0f);
+    joint.lockImpulse[0] = joint.lockImpulse[1] = 0.0f;
+    for (int i = 0; i < 3; ++i) joint.lowerImpulse[i] = joint.upperImpulse[i] = 0.0f;
+    joint.motorImpulse = glm::vec3(0.0f);
+  }
+  if (!joint.enableLimits) {
+    for (int i = 0; i < 3; ++i) joint.lowerImpulse[i] = joint.upperImpulse[i] = 0.0f;
+  }
+  if (!joint.motor.enabled) {
+    joint.motorImpulse = glm::vec3(0.0f);
+    joint.motorTorqueWorld = glm::vec3(0.0f);
+  }
+}
+
+void WarmStartJoint(Joint& joint, Body& a, Body& b) {
+  const AngularRows rows = RowsFor(joint, a, b);
+  ApplyAngularImpulse(a, b, AngularImpulse(joint, rows));
+  const glm::vec3 rA = a.transform.rotation * joint.localAnchorA;
+  const glm::vec3 rB = b.transform.rotation * joint.localAnchorB;
+  ApplyLinearImpulse(a, b, rA, rB, joint.linearImpulse);
+}
+
+void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bool useBias) {
+  const AngularRows rows = RowsFor(joint, a, b);
+
+  if (joint.motor.enabled && rows.motorCount > 0) {
+    const glm::quat targetB = a.transform.rotation * joint.localFrameA * joint.motor.target;
+    const glm::vec3 error = RotationVector(b.transform.rotation * joint.localFrameB * glm::conjugate(targetB));
+    float c[3] = {};
+    for (int i = 0; i < rows.motorCount; ++i) c[i] = glm::dot(rows.motorAxis[i], error);
+    const MotorGains gains{joint.motor.stiffness, joint.motor.damping, joint.motor.maxTorque,
+                           joint.motor.feedForwardTorque};
+    SolveMotorPart(a, b, rows.motorAxis, c, rows.motorCount, gains, joint.motorImpulse, context);
+    glm::vec3 torque(0.0f);
+    for (int i = 0; i < rows.motorCount; ++i) torque += joint.motorImpulse[i] * rows.motorAxis[i];
+    joint.motorTorqueWorld = context.invH * torque;
+  }
+
+  for (int i = 0; i < rows.limitCount; ++i) {
+    SolveAngularLimit(a, b, rows.limitAxis[i], rows.angle[i] - rows.range[i].lower, joint.lowerImpulse[i], context, useBias);
+    SolveAngularLimit(a, b, -rows.limitAxis[i], rows.range[i].upper - rows.angle[i], joint.upperImpulse[i], context,
+                      useBias);
+  }
+
+  for (int i = 0; i < rows.lockCount; ++i) {
+    SolveAngularEquality(a, b, rows.lockAxis[i], rows.lockPosition[i], joint.lockImpulse[i], context, useBias);
+  }
+
+  SolvePointPart(a, b, joint.localAnchorA, joint.localAnchorB, joint.linearImpulse, context, useBias);
+}
+
+}  // namespace rise::physics

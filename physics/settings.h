@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+// World tunables: time step, sub-steps, constraint softness and health limits, with units.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+namespace rise::physics {
+
+// Everything here is read when a step starts, so changing a value between steps is allowed.
+// The defaults are the ones the 15-box ragdoll (scenes/ragdoll_drop) was tuned with: lying with
+// hands and feet on the ground it comes to rest without jitter and its joints stay closed.
+struct WorldSettings {
+  glm::vec3 gravity{0.0f, -9.81f, 0.0f};  // m/s^2
+
+  // One World::Step advances this much time, s. Fixed so every run takes the same steps.
+  float timeStep = 1.0f / 240.0f;
+
+  // Sub-steps per step (Box2D v3 soft step). Each sub-step integrates, warm starts, solves and
+  // relaxes once; several cheap sub-steps converge better than many iterations on one big step.
+  int substepCount = 4;
+
+  // Extra passes per sub-step: the biased solve (removes overlap and joint drift softly) and the
+  // unbiased relax (removes the velocity the bias added, so position correction adds no energy).
+  int solveIterations = 1;
+  int relaxIterations = 1;
+
+  // Contact softness: a damped spring that pushes overlapping boxes apart. The frequency is capped
+  // at a quarter of the sub-step rate inside the solver, so a coarse step stays stable.
+  float contactHertz = 30.0f;        // Hz
+  float contactDampingRatio = 10.0f;  // over-damped: overlap is removed without bounce
+  float contactPushMaxSpeed = 3.0f;   // m/s; deep overlap is pushed out no faster than this
+
+  // Joint softness for the point, axis-lock and limit parts of every joint.
+  float jointHertz = 60.0f;         // Hz
+  float jointDampingRatio = 5.0f;   // dimensionless
+
+  // Contacts are created while the surfaces are closer than this, so a fast body is stopped
+  // before it passes into the ground (speculative contacts), m.
+  float speculativeDistance = 0.02f;
+
+  // A contact point keeps its warm-start impulse into the next step while it moved less than this, m.
+  float warmStartMatchDistance = 0.01f;
+
+  // Health limits: a body faster than these is reported as exploded (World::Step's status).
+  float maxHealthyLinearSpeed = 100.0f;   // m/s
+  float maxHealthyAngularSpeed = 200.0f;  // rad/s
+
+  bool enableWarmStarting = true;
+};
+
+}  // namespace rise::physics

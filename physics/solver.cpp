@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: MIT
+// The soft step (Box2D v3's solver, scalar and single-threaded).
+//
+// Stage order and why:
+// - Collide once per step: manifolds and effective masses are reused by every sub-step; anchors
+//   move with the bodies, so separations stay current without re-running the narrow phase.
+// - Sub-steps: each integrates gravity and applied forces, warm starts with the last impulses,
+//   solves once with a soft position bias, integrates positions, then relaxes once without bias.
+//   The relax pass removes the velocity that the bias added, so overlap and joint drift are
+//   corrected in position only and never turn into kinetic energy (see contact_solver.cpp).
+// - Joints before contacts within each pass: contacts then see the limbs where the joints put
+//   them, which keeps hands and feet resting on the ground from being pulled through it.
+// Determinism: one thread, fixed loop orders, no containers with unspecified iteration order,
+// and the build uses -ffp-contract=off, so the same input gives bit-identical states.
+#include "physics/solver.h"
+
+#include "physics/constraint_parts.h"
+#include "physics/contact_solver.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rise::physics {
+
+namespace {
+
+Body& BodyOrStatic(WorldState& state, int32_t index) {
+  return index >= 0 ? state.bodies[index] : state.staticBody;
+}
+
+SolverContext MakeContext(const WorldSettings& settings) {
+  SolverContext context;
+  context.h = settings.timeStep / float(settings.substepCount);
+  context.invH = 1.0f / context.h;
+  // A spring stiffer than a quarter of the sub-step rate is no longer resolved by the integrator.
+  const float contactHertz = std::min(settings.contactHertz, 0.25f * context.invH);
+  context.contactSoftness = MakeSoftness(contactHertz, settings.contactDampingRatio, context.h);
+  const float jointHertz = std::min(settings.jointHertz, 0.25f * context.invH);
+  context.jointSoftness = MakeSoftness(jointHertz, settings.jointDampingRatio, context.h);
+  context.contactPushMaxSpeed = settings.contactPushMaxSpeed;
+  context.warmStart = settings.enableWarmStarting;
+  return context;
+}
+
+void PrepareJoints(WorldState& state, const SolverContext& context) {
+  for (Joint& joint : state.joints) PrepareJoint(joint, context);
+}
+
+void IntegrateVelocities(WorldState& state, float h) {
+  for (Body& body : state.bodies) IntegrateVelocity(body, state.settings.gravity, h);
+}
+
+void WarmStart(WorldState& state) {
+  for (Joint& joint : state.joints) {
+    WarmStartJoint(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB]);
+  }
+  WarmStartContacts(state.contacts, state.bodies, state.staticBody);
+}
+
+void Solve(WorldState& state, const SolverContext& context, bool useBias) {
+  for (Joint& joint : state.joints) {
+    SolveJoint(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB], context, useBias);
+  }
+  SolveContacts(state.contacts, state.bodies, state.staticBody, context, useBias);
+}
+
+void IntegratePositions(WorldState& state, float h) {
+  for (Body& body : state.bodies) IntegratePosition(body, h);
+}
+
+bool IsFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Impulses already live in the contacts and joints for the next warm start; what is left is to
+// consume the applied forces and to check the state's health.
+StepStatus StoreImpulses(WorldState& state) {
+  StepStatus status;
+  const float maxV2 = state.settings.maxHealthyLinearSpeed * state.settings.maxHealthyLinearSpeed;
+  const float maxW2 = state.settings.maxHealthyAngularSpeed * state.settings.maxHealthyAngularSpeed;
+  for (size_t i = 0; i < state.bodies.size(); ++i) {
+    Body& body = state.bodies[i];
+    body.force = glm::vec3(0.0f);
+    body.torque = glm::vec3(0.0f);
+    const glm::quat& q = body.transform.rotation;
+    uint32_t flags = kStepOk;
+    if (!IsFinite(body.transform.position) || !IsFinite(body.linearVelocity) || !IsFinite(body.angularVelocity) ||
+        !std::isfinite(q.w) || !IsFinite(glm::vec3(q.x, q.y, q.z))) {
+      flags |= kStepNonFinite;
+    } else if (glm::dot(body.linearVelocity, body.linearVelocity) > maxV2 ||
+               glm::dot(body.angularVelocity, body.angularVelocity) > maxW2) {
+      flags |= kStepSpeedExceeded;
+    }
+    if (flags != kStepOk && status.firstBadBody < 0) status.firstBadBody = int32_t(i);
+    status.flags |= flags;
+  }
+  return status;
+}
+
+}  // namespace
+
+StepStatus Step(WorldState& state) {
+  const SolverContext context = MakeContext(state.settings);
+
+  Collide(state.bodies, state.statics, state.joinedPairs, state.settings, state.contacts, state.contactScratch);
+  PrepareContacts(state.contacts, state.bodies, state.staticBody, context);
+  PrepareJoints(state, context);
+
+  for (int substep = 0; substep < state.settings.substepCount; ++substep) {
+    IntegrateVelocities(state, context.h);
+    if (context.warmStart) WarmStart(state);
+    for (int i = 0; i < state.settings.solveIterations; ++i) Solve(state, context, true);
+    IntegratePositions(state, context.h);
+    for (int i = 0; i < state.settings.relaxIterations; ++i) Solve(state, context, false);
+  }
+
+  state.status = StoreImpulses(state);
+  return state.status;
+}
+
+}  // namespace rise::physics
