@@ -34,6 +34,19 @@ std::string Clip::Validate() const {
   for (const glm::vec3& t : rootTranslation) {
     if (!IsFinite(t)) return "root translation holds a non-finite value";
   }
+  if (!translations.empty()) {
+    if (static_cast<int>(translations.size()) != skeleton.JointCount() || !translations[0].empty()) {
+      return "translations needs one track per joint and none for the root";
+    }
+    for (int j = 1; j < skeleton.JointCount(); ++j) {
+      if (!translations[j].empty() && static_cast<int>(translations[j].size()) != frames) {
+        return "translation track of '" + skeleton.joints[j].name + "' does not hold one key per frame";
+      }
+      for (const glm::vec3& t : translations[j]) {
+        if (!IsFinite(t)) return "translation track of '" + skeleton.joints[j].name + "' holds a non-finite value";
+      }
+    }
+  }
   const double duration = Duration() + 1e-9;
   for (const PhaseSpan& phase : metadata.phases) {
     if (phase.start < 0.0 || phase.end > duration || phase.start > phase.end) {
@@ -57,13 +70,19 @@ std::vector<glm::quat> Clip::WorldRotations(int frame) const {
   return world;
 }
 
+glm::vec3 Clip::LocalTranslation(int joint, int frame) const {
+  if (joint == 0) return rootTranslation[frame];
+  if (!translations.empty() && !translations[joint].empty()) return translations[joint][frame];
+  return skeleton.joints[joint].restOffset;
+}
+
 std::vector<glm::vec3> Clip::WorldPositions(int frame) const {
   std::vector<glm::vec3> positions(skeleton.joints.size());
   std::vector<glm::quat> world = WorldRotations(frame);
   for (int j = 0; j < skeleton.JointCount(); ++j) {
     const int parent = skeleton.joints[j].parent;
     positions[j] = parent < 0 ? rootTranslation[frame]
-                              : positions[parent] + world[parent] * skeleton.joints[j].restOffset;
+                              : positions[parent] + world[parent] * LocalTranslation(j, frame);
   }
   return positions;
 }
