@@ -12,14 +12,13 @@
 // Everything runs on fixed-size stack arrays: the functions never allocate.
 #include "physics/collide.h"
 
-#include "base/assert.h"
-
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
-
-#include <cmath>
 #include <initializer_list>
 #include <utility>
+
+#include "base/assert.h"
 
 namespace rise::physics {
 namespace {
@@ -60,7 +59,9 @@ OrientedBox MakeBox(const BoxShape& shape, const Transform& transform) {
   return {transform.position, glm::mat3_cast(transform.rotation), shape.halfExtents};
 }
 
-float SignOf(float x) { return x < 0.0f ? -1.0f : 1.0f; }
+float SignOf(float x) {
+  return x < 0.0f ? -1.0f : 1.0f;
+}
 
 glm::vec3 Vertex(const OrientedBox& box, int v) {
   glm::vec3 p = box.center;
@@ -133,9 +134,9 @@ void ReduceToManifold(const Candidate* candidates, int count, const glm::vec3& n
       if (i == deepest || i == farthest || i == third) continue;
       const glm::vec3 q = candidates[i].point;
       // Twice the area q adds when inserted beyond the triangle edge it lies farthest outside.
-      const float outside = -std::fmin(std::fmin(orientation * signedArea(p0, p1, q),
-                                                 orientation * signedArea(p1, p2, q)),
-                                       orientation * signedArea(p2, p0, q));
+      const float outside =
+          -std::fmin(std::fmin(orientation * signedArea(p0, p1, q), orientation * signedArea(p1, p2, q)),
+                     orientation * signedArea(p2, p0, q));
       if (outside > bestAdded) {
         bestAdded = outside;
         fourth = i;
@@ -283,9 +284,8 @@ int SupportEdge(const OrientedBox& box, int axis, const glm::vec3& direction, gl
 
 // Closest points of two segments given as centre + t * direction, |t| <= half,
 // with unit, non-parallel directions (Ericson, Real-Time Collision Detection 5.1.9).
-void ClosestPointsOfSegments(const glm::vec3& centerA, const glm::vec3& dirA, float halfA,
-                             const glm::vec3& centerB, const glm::vec3& dirB, float halfB, glm::vec3& onA,
-                             glm::vec3& onB) {
+void ClosestPointsOfSegments(const glm::vec3& centerA, const glm::vec3& dirA, float halfA, const glm::vec3& centerB,
+                             const glm::vec3& dirB, float halfB, glm::vec3& onA, glm::vec3& onB) {
   const glm::vec3 r = centerA - centerB;
   const float b = glm::dot(dirA, dirB);
   const float c = glm::dot(dirA, r);
