@@ -42,9 +42,10 @@ void TwoBoneIk::Solve() {
   float distance = glm::length(toTarget);
   const glm::vec3 axis = distance > 1e-6f ? toTarget / distance : restBoneDirection;
 
-  // Reach limits: fully straight (minus a sliver so the plane stays defined)
-  // and the distance at the largest allowed flexion (law of cosines).
-  const float maxReach = (a + b) * 0.9999f;
+  // Reach limits: fully straight, and the distance at the largest allowed
+  // flexion (law of cosines). The bend plane comes from the pole, so it stays
+  // defined for a straight limb.
+  const float maxReach = a + b;
   const float minReach = std::sqrt(a * a + b * b + 2.0f * a * b * std::cos(maxFlexion));
   reached = distance <= maxReach && distance >= minReach;
   distance = std::clamp(distance, minReach, maxReach);
