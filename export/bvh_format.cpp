@@ -4,11 +4,6 @@
 
 namespace rise {
 
-glm::quat BvhFormat::AxisChange() const {
-  if (up == BvhUp::kY) return glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
-  return glm::angleAxis(glm::radians(90.0f), glm::vec3(1.0f, 0.0f, 0.0f));
-}
-
 std::optional<BvhUnits> ParseBvhUnits(std::string_view name) {
   if (name == "m") return BvhUnits::kMetres;
   if (name == "cm") return BvhUnits::kCentimetres;

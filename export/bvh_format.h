@@ -24,11 +24,14 @@ struct BvhFormat {
 
   // File length units per metre (1 or 100).
   float Scale() const { return units == BvhUnits::kCentimetres ? 100.0f : 1.0f; }
-  // Rotation taking rise-gen world axes to the file's axes.
-  glm::quat AxisChange() const;
+  // A rise-gen vector / rotation in the file's axes, and back. Exact
+  // component swaps, so zeros stay zeros in the text.
+  glm::vec3 AxesToFile(const glm::vec3& v) const { return up == BvhUp::kY ? v : glm::vec3(v.x, -v.z, v.y); }
+  glm::vec3 AxesFromFile(const glm::vec3& v) const { return up == BvhUp::kY ? v : glm::vec3(v.x, v.z, -v.y); }
+  glm::quat AxesToFile(const glm::quat& q) const { return up == BvhUp::kY ? q : glm::quat(q.w, q.x, -q.z, q.y); }
   // A rise-gen position (metres, Y-up) in file units and axes, and back.
-  glm::vec3 ToFile(const glm::vec3& p) const { return Scale() * (AxisChange() * p); }
-  glm::vec3 FromFile(const glm::vec3& p) const { return glm::inverse(AxisChange()) * (p / Scale()); }
+  glm::vec3 ToFile(const glm::vec3& p) const { return Scale() * AxesToFile(p); }
+  glm::vec3 FromFile(const glm::vec3& p) const { return AxesFromFile(p) / Scale(); }
 };
 
 // "m" | "cm" and "y" | "z"; anything else -> nullopt.

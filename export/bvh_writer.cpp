@@ -63,7 +63,8 @@ bool HasPositionChannels(const Clip& clip, int joint) {
 void Append(std::string& out, float value) {
   char buffer[32];
   // 7 significant digits: 1 um at 1 m, 1e-4 degree at 100 degrees.
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::general, 7);
+  // Adding +0 turns -0 into 0, which reads better and compares equal in text.
+  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value + 0.0f, std::chars_format::general, 7);
   out.append(buffer, result.ptr);
 }
 
@@ -123,8 +124,6 @@ glm::vec3 EulerZxy(const glm::quat& q, const glm::vec3& previous) {
 std::string FormatBvh(const Clip& clip, const BvhOptions& options) {
   RISE_ASSERT_MSG(clip.Validate().empty(), "writing an invalid clip");
   const Layout layout = MakeLayout(clip);
-  const glm::quat axes = options.format.AxisChange();
-  const glm::quat axesInverse = glm::inverse(axes);
 
   std::string out;
   out.reserve(256 * clip.skeleton.joints.size() + static_cast<size_t>(clip.FrameCount()) * layout.order.size() * 30);
@@ -138,8 +137,8 @@ std::string FormatBvh(const Clip& clip, const BvhOptions& options) {
   }
   out += '\n';
 
-  // A joint's local rotation in the file's axes is C L C^-1; position channels
-  // are converted like offsets. Euler angles continue from the previous frame.
+  // Rotations and position channels are converted to the file's axes like
+  // offsets. Euler angles continue from the previous frame.
   std::vector<glm::vec3> previousEuler(clip.skeleton.joints.size(), glm::vec3(0.0f));
   std::vector<glm::quat> previousKey(clip.skeleton.joints.size(), glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
   for (int f = 0; f < clip.FrameCount(); ++f) {
@@ -152,7 +151,7 @@ std::string FormatBvh(const Clip& clip, const BvhOptions& options) {
         out += ' ';
       }
       previousKey[j] = ContinueRotationTrack(clip.rotations[j][f], previousKey[j]);
-      const glm::vec3 euler = EulerZxy(axes * previousKey[j] * axesInverse, previousEuler[j]);
+      const glm::vec3 euler = EulerZxy(options.format.AxesToFile(previousKey[j]), previousEuler[j]);
       previousEuler[j] = euler;
       AppendVec(out, glm::vec3(glm::degrees(euler.z), glm::degrees(euler.x), glm::degrees(euler.y)));
     }
