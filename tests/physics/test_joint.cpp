@@ -1,0 +1,224 @@
+// SPDX-License-Identifier: MIT
+// Joints: pendulum period, hanging chain, limits under load, PD motor.
+#include "physics/world.h"
+#include "test_support.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using namespace rise::physics;
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+constexpr float kDegree = kPi / 180.0f;
+
+BodyId AddBox(World& world, glm::vec3 position, glm::vec3 halfExtents, float mass) {
+  BodyDef def;
+  def.box.halfExtents = halfExtents;
+  def.mass = mass;
+  def.transform.position = position;
+  return world.CreateBody(def);
+}
+
+// A 2 kg rod along +z hinged to the world at (0, 1, 0) about world x; gravity turns it to +angle.
+struct HingedRod {
+  World world;
+  BodyId rod;
+  JointId hinge;
+  static constexpr float kMass = 2.0f;
+  static constexpr float kHalfLength = 0.25f;
+
+  explicit HingedRod(const MotorDef& motor = MotorDef{}, bool limits = false, AngleRange range = {}) {
+    rod = AddBox(world, glm::vec3(0.0f, 1.0f, kHalfLength), glm::vec3(0.03f, 0.03f, kHalfLength), kMass);
+    JointDef def;
+    def.type = JointType::kHinge;
+    def.bodyB = rod;
+    def.anchor = glm::vec3(0.0f, 1.0f, 0.0f);
+    def.enableLimits = limits;
+    def.twistLimits = range;
+    def.motor = motor;
+    hinge = world.CreateJoint(def);
+  }
+  float Angle() const {
+    const glm::quat q = world.GetJointRelativeRotation(hinge);
+    return 2.0f * std::atan2(q.x, q.w);
+  }
+};
+
+}  // namespace
+
+TEST_SUITE("physics.joint") {
+  TEST_CASE("a hinge pendulum swings with period 2 pi sqrt(L / g)") {
+    World world;
+    const float length = 1.0f;
+    const float amplitude = 5.0f * kDegree;
+    const glm::vec3 pivot(0.0f, 2.0f, 0.0f);
+    const BodyId bob = AddBox(world, pivot + length * glm::vec3(0.0f, -std::cos(amplitude), std::sin(amplitude)),
+                              glm::vec3(0.01f), 1.0f);
+    JointDef def;
+    def.type = JointType::kHinge;
+    def.bodyB = bob;
+    def.anchor = pivot;
+    world.CreateJoint(def);
+
+    // Times of downward zero crossings of the swing angle, linearly interpolated.
+    std::vector<double> crossings;
+    float previous = amplitude;
+    for (int i = 0; i < 240 * 12; ++i) {
+      world.Step();
+      const glm::vec3 r = world.GetTransform(bob).position - pivot;
+      const float angle = std::atan2(r.z, -r.y);
+      if (previous > 0.0f && angle <= 0.0f) {
+        crossings.push_back(world.Time() - world.Settings().timeStep * double(angle / (angle - previous)));
+      }
+      previous = angle;
+    }
+    REQUIRE(crossings.size() >= 5);
+    const double period = (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+    const double expected = 2.0 * 3.14159265358979 * std::sqrt(double(length) / 9.81);
+    INFO("period " << period << " s, expected " << expected << " s");
+    CHECK(std::fabs(period - expected) / expected < 0.01);
+  }
+
+  TEST_CASE("a 15-link hanging chain stays connected and calm after a kick") {
+    World world;
+    const int links = 15;
+    const float halfLength = 0.05f;
+    const glm::vec3 top(0.0f, 2.0f, 0.0f);
+    std::vector<BodyId> bodies;
+    std::vector<JointId> joints;
+    for (int i = 0; i < links; ++i) {
+      bodies.push_back(AddBox(world, top - glm::vec3(0.0f, halfLength * float(2 * i + 1), 0.0f),
+                              glm::vec3(0.02f, halfLength, 0.02f), 0.5f));
+      JointDef def;
+      def.type = JointType::kBall;
+      def.bodyA = i == 0 ? kWorldBody : bodies[i - 1];
+      def.bodyB = bodies[i];
+      def.anchor = top - glm::vec3(0.0f, 2.0f * halfLength * float(i), 0.0f);
+      joints.push_back(world.CreateJoint(def));
+    }
+    const glm::vec3 kick(1.0f, 0.0f, 0.5f);
+    world.SetLinearVelocity(bodies.back(), kick);
+    const double kickEnergy = 0.5 * 0.5 * double(glm::dot(kick, kick));
+    const double e0 = world.TotalEnergy();
+    float maxError = 0.0f;
+    double maxEnergy = e0;
+    for (int i = 0; i < 240 * 5; ++i) {
+      REQUIRE(world.Step().Ok());
+      for (JointId joint : joints) maxError = std::max(maxError, world.GetJointAnchorSeparation(joint));
+      maxEnergy = std::max(maxEnergy, world.TotalEnergy());
+    }
+    INFO("max joint error " << maxError << " m, E0 " << e0 << " J, max E " << maxEnergy << " J");
+    CHECK(maxError < 1e-3f);
+    // Calm: the soft joints never feed energy in (within 1 % of the kick's).
+    CHECK(maxEnergy - e0 <= 0.01 * kickEnergy);
+  }
+
+  TEST_CASE("a hinge limit holds within 1 deg under gravity and a torque pushing past it") {
+    HingedRod rig(MotorDef{}, true, AngleRange{-0.3f, 0.3f});
+    float maxAngle = -1.0f;
+    for (int i = 0; i < 240 * 2; ++i) {
+      rig.world.ApplyTorque(rig.rod, glm::vec3(20.0f, 0.0f, 0.0f));
+      rig.world.Step();
+      maxAngle = std::max(maxAngle, rig.Angle());
+    }
+    INFO("max angle " << maxAngle / kDegree << " deg, limit " << 0.3f / kDegree << " deg");
+    CHECK(maxAngle < 0.3f + kDegree);
+    CHECK(maxAngle > 0.3f - kDegree);
+  }
+
+  TEST_CASE("universal and ball limits hold within 1 deg under torques pushing past them") {
+    struct Case {
+      JointType type;
+      glm::vec3 torque;
+    };
+    // Rods along +x (the twist axis) from a world anchor; no gravity, only the pushing torque.
+    const Case cases[] = {{JointType::kUniversal, {0.0f, 30.0f, 0.0f}},  // alpha, about A's y
+                          {JointType::kUniversal, {0.0f, 0.0f, -30.0f}}, // beta, about B's z
+                          {JointType::kBall, {0.0f, 0.0f, 30.0f}},       // swing cone
+                          {JointType::kBall, {30.0f, 0.0f, 0.0f}}};      // twist
+    for (const Case& c : cases) {
+      WorldSettings settings;
+      settings.gravity = glm::vec3(0.0f);
+      World world(settings);
+      const BodyId rod = AddBox(world, glm::vec3(0.25f, 0.0f, 0.0f), glm::vec3(0.25f, 0.04f, 0.04f), 2.0f);
+      JointDef def;
+      def.type = c.type;
+      def.bodyB = rod;
+      def.enableLimits = true;
+      def.swingYLimits = {-0.4f, 0.5f};
+      def.swingZLimits = {-0.6f, 0.3f};
+      def.swingCone = 0.7f;
+      def.twistLimits = {-0.2f, 0.45f};
+      const JointId joint = world.CreateJoint(def);
+      float worst = 0.0f;  // largest violation of any limit, rad
+      float reached = 0.0f;
+      for (int i = 0; i < 240 * 2; ++i) {
+        world.ApplyTorque(rod, c.torque);
+        world.Step();
+        const glm::quat q = world.GetJointRelativeRotation(joint);
+        const glm::mat3 r = glm::mat3_cast(q);
+        if (c.type == JointType::kUniversal) {
+          const float alpha = std::atan2(r[2].x, r[2].z);
+          const float beta = std::atan2(r[0].y, r[1].y);
+          worst = std::max({worst, alpha - 0.5f, -0.4f - alpha, beta - 0.3f, -0.6f - beta});
+          reached = std::max(std::fabs(alpha), std::fabs(beta));
+        } else {
+          const float swing = std::acos(std::clamp(r[0].x, -1.0f, 1.0f));
+          const glm::quat qq = q.w < 0.0f ? -q : q;
+          const float twist = 2.0f * std::atan2(qq.x, qq.w);
+          worst = std::max({worst, swing - 0.7f, twist - 0.45f, -0.2f - twist});
+          reached = std::max(swing, std::fabs(twist));
+        }
+      }
+      INFO("type " << int(c.type) << ": worst violation " << worst / kDegree << " deg, reached " << reached / kDegree
+                   << " deg");
+      CHECK(worst < kDegree);
+      CHECK(reached > 0.25f);  // the torque did drive the joint to a limit
+    }
+  }
+
+  TEST_CASE("a PD motor reaches its target within 2 deg and reports the holding torque") {
+    MotorDef motor;
+    motor.enabled = true;
+    const float target = -0.5f;  // rod raised 0.5 rad above horizontal, against gravity
+    motor.target = glm::angleAxis(target, glm::vec3(1.0f, 0.0f, 0.0f));
+    motor.stiffness = 400.0f;
+    motor.damping = 40.0f;
+    motor.maxTorque = 100.0f;
+    HingedRod rig(motor);
+    for (int i = 0; i < 240 * 3; ++i) rig.world.Step();
+    const float gravityTorque = HingedRod::kMass * 9.81f * HingedRod::kHalfLength * std::cos(rig.Angle());
+    const glm::vec3 torque = rig.world.GetMotorTorque(rig.hinge);
+    INFO("angle " << rig.Angle() / kDegree << " deg, motor torque " << torque.x << " N m, gravity " << gravityTorque);
+    CHECK(std::fabs(rig.Angle() - target) < 2.0f * kDegree);
+    // Static balance: the motor's torque cancels gravity's (k (angle - target) = m g a cos).
+    CHECK(-torque.x == doctest::Approx(gravityTorque).epsilon(0.02));
+    CHECK(rig.Angle() - target == doctest::Approx(gravityTorque / 400.0f).epsilon(0.05));
+
+    SUBCASE("feed-forward of the gravity torque removes the steady-state error") {
+      rig.world.SetMotorFeedForward(rig.hinge, glm::vec3(-gravityTorque, 0.0f, 0.0f));
+      for (int i = 0; i < 240 * 3; ++i) rig.world.Step();
+      INFO("angle " << rig.Angle() / kDegree << " deg");
+      CHECK(std::fabs(rig.Angle() - target) < 0.05f * kDegree);
+    }
+    SUBCASE("the torque clamp lets a weak motor sag") {
+      rig.world.SetMotorGains(rig.hinge, 400.0f, 40.0f, 2.0f);
+      float maxTorque = 0.0f;
+      float maxAngle = -1.0f;
+      for (int i = 0; i < 240 * 3; ++i) {
+        rig.world.Step();
+        maxTorque = std::max(maxTorque, glm::length(rig.world.GetMotorTorque(rig.hinge)));
+        maxAngle = std::max(maxAngle, rig.Angle());
+      }
+      INFO("max torque " << maxTorque << " N m, max angle " << maxAngle / kDegree << " deg");
+      CHECK(maxTorque <= 2.0f + 1e-4f);
+      CHECK(maxAngle > 0.5f);  // swings well past horizontal: 2 N m cannot hold the 4.9 N m rod
+    }
+  }
+}
