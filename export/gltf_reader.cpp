@@ -291,10 +291,12 @@ std::string ReadGltf(const std::string& path, Clip& clip) {
         if (inverseBinds.Valid() && static_cast<size_t>(skinJoint) < inverseBinds.Count()) {
           for (int i = 0; i < 16; ++i) glm::value_ptr(inverseBind)[i] = inverseBinds.Get(skinJoint, i);
         }
-        // Mesh space -> joint node space -> world at rest -> our joint frame.
+        // Mesh space -> joint node space -> world at rest. Our joint frame is
+        // the world's axes at the joint (its rest rotation removed), so the
+        // box coordinates are plain world offsets from the joint.
         const glm::vec4 mesh(positions.Get(v, 0), positions.Get(v, 1), positions.Get(v, 2), 1.0f);
         const glm::vec3 worldPoint(restWorld[j] * (inverseBind * mesh));
-        const glm::vec3 local = bindRotationInverse[j] * (worldPoint - glm::vec3(restWorld[j][3]));
+        const glm::vec3 local = worldPoint - glm::vec3(restWorld[j][3]);
         lo[j] = glm::min(lo[j], local);
         hi[j] = glm::max(hi[j], local);
       }

@@ -8,6 +8,9 @@ add_executable(write_sample_clips ${CMAKE_CURRENT_LIST_DIR}/write_sample_clips.c
 target_include_directories(write_sample_clips PRIVATE ${CMAKE_CURRENT_LIST_DIR}/.. ${PROJECT_SOURCE_DIR})
 target_link_libraries(write_sample_clips PRIVATE rise_export nlohmann_json::nlohmann_json rise_options)
 
+add_executable(compare_clips ${CMAKE_CURRENT_LIST_DIR}/compare_clips.cpp)
+target_link_libraries(compare_clips PRIVATE rise_export rise_options)
+
 set(RISE_EXPORT_SAMPLES ${CMAKE_CURRENT_BINARY_DIR}/export_samples)
 add_test(NAME export.write_samples COMMAND write_sample_clips ${RISE_EXPORT_SAMPLES})
 set_tests_properties(export.write_samples PROPERTIES FIXTURES_SETUP export_samples)
@@ -38,7 +41,10 @@ if(RISE_BLENDER)
       --unset=VIRTUAL_ENV PATH=/usr/local/bin:/usr/bin:/bin
       ${RISE_BLENDER} -b --factory-startup --python-exit-code 1
       --python ${CMAKE_CURRENT_LIST_DIR}/blender_import.py -- ${RISE_EXPORT_SAMPLES})
-  set_tests_properties(export.blender_import PROPERTIES TIMEOUT 300)
+  set_tests_properties(export.blender_import PROPERTIES TIMEOUT 300 FIXTURES_SETUP blender_roundtrip)
+  add_test(NAME export.read_blender_glb
+    COMMAND compare_clips ${RISE_EXPORT_SAMPLES}/sample.glb ${RISE_EXPORT_SAMPLES}/blender_roundtrip.glb)
+  set_tests_properties(export.read_blender_glb PROPERTIES FIXTURES_REQUIRED blender_roundtrip LABELS blender)
 else()
   rise_skipped_test(export.blender_import "blender is not installed: Blender import check skipped (scripts/deps.sh installs it)")
 endif()
