@@ -21,18 +21,18 @@
 // each bone instead.
 #pragma once
 
-#include "export/clip.h"
-
 #include <string>
+
+#include "export/clip.h"
 
 namespace rise {
 
 struct PreviewOptions {
-  int keyFrames = 8;        // frames shown; fewer when the clip has fewer frames
-  int columns = 4;          // frames per row
-  int cellWidth = 320;      // pixels per frame, including its margin
-  int cellHeight = 300;     // pixels per frame, including the label lines under it
-  std::string title;        // empty: "RISE-GEN PREVIEW" and the clip's length
+  int keyFrames = 8;     // frames shown; fewer when the clip has fewer frames
+  int columns = 4;       // frames per row
+  int cellWidth = 320;   // pixels per frame, including its margin
+  int cellHeight = 300;  // pixels per frame, including the label lines under it
+  std::string title;     // empty: "RISE-GEN PREVIEW" and the clip's length
 };
 
 // Sheet size in pixels for a clip of `frameCount` frames: columns * cellWidth
