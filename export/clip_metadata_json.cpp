@@ -13,7 +13,9 @@ namespace rise {
 std::string MetadataToJson(const Clip& clip) {
   const ClipMetadata& m = clip.metadata;
   nlohmann::json doc;
-  doc["generator"] = std::string("rise-gen ") + RISE_VERSION;
+  // The version that made the clip; a clip made outside core/ has none and
+  // is credited to this build.
+  doc["generator"] = "rise-gen " + (m.generatorVersion.empty() ? std::string(RISE_VERSION) : m.generatorVersion);
   doc["fps"] = clip.fps;
   doc["frameCount"] = clip.FrameCount();
   doc["duration"] = clip.Duration();
