@@ -139,10 +139,41 @@ struct Camera {
   }
 };
 
-Camera MakeCamera() {
-  const float az = glm::radians(kAzimuthDeg), el = glm::radians(kElevationDeg);
+// The ground plane, with the unit tangents its grid lines run along.
+struct GroundPlane {
+  glm::vec3 point, normal, u, v;
+
+  float Height(const glm::vec3& p) const { return glm::dot(p - point, normal); }
+  // Straight below p along gravity (-Y), on the plane: where its shadow falls.
+  glm::vec3 Below(const glm::vec3& p) const { return p - glm::vec3(0.0f, Height(p) / normal.y, 0.0f); }
+  glm::vec2 Coordinates(const glm::vec3& p) const { return {glm::dot(p - point, u), glm::dot(p - point, v)}; }
+};
+
+GroundPlane MakeGroundPlane(const PreviewOptions& options) {
+  GroundPlane plane;
+  plane.point = options.groundPoint;
+  plane.normal = glm::normalize(options.groundNormal);
+  const glm::vec3 x(1.0f, 0.0f, 0.0f);
+  plane.u = glm::normalize(x - glm::dot(x, plane.normal) * plane.normal);
+  plane.v = glm::cross(plane.u, plane.normal);  // +Z on flat ground
+  return plane;
+}
+
+Camera MakeCamera(const GroundPlane& ground) {
+  // On a slope rising towards the camera the usual elevation would see the
+  // ground edge-on; raise the camera until it looks down on the plane at least
+  // as steeply as on flat ground.
+  const float az = glm::radians(kAzimuthDeg);
+  float el = glm::radians(kElevationDeg);
+  auto towardCamera = [&](float elevation) {
+    return glm::vec3(std::sin(az) * std::cos(elevation), std::sin(elevation), std::cos(az) * std::cos(elevation));
+  };
+  while (glm::dot(towardCamera(el), ground.normal) < std::sin(glm::radians(kElevationDeg)) - 1e-4f &&
+         el < glm::radians(80.0f)) {
+    el += glm::radians(1.0f);
+  }
   Camera camera;
-  camera.forward = -glm::vec3(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
+  camera.forward = -towardCamera(el);
   camera.right = glm::normalize(glm::cross(camera.forward, glm::vec3(0, 1, 0)));
   camera.up = glm::cross(camera.right, camera.forward);
   return camera;
@@ -188,36 +219,37 @@ void Rasterise(const Canvas& canvas, const glm::vec3& a, const glm::vec3& b, con
   }
 }
 
-// The ground patch around the motion's footprint.
+// The ground patch around the motion's footprint, in plane coordinates.
 struct GroundPatch {
-  float minX, maxX, minZ, maxZ;
+  glm::vec2 min, max;
 };
 
-void DrawGround(Canvas& canvas, const Camera& camera, const GroundPatch& patch) {
-  // A pixel's ray meets y = 0 at a point linear in the pixel's screen
-  // coordinates; the world length of one pixel along x and z sets the line width.
+void DrawGround(Canvas& canvas, const Camera& camera, const GroundPlane& ground, const GroundPatch& patch) {
+  // A pixel's ray meets the plane at a point linear in the pixel's screen
+  // coordinates; the plane length of one pixel along u and v sets the line width.
   const glm::vec3 f = camera.forward, r = camera.right, u = camera.up;
-  auto worldAt = [&](float px, float py) {
+  const float facing = glm::dot(f, ground.normal);
+  auto planeAt = [&](float px, float py) {
     const float sx = (px - camera.origin.x) / camera.scale, sy = (camera.origin.y - py) / camera.scale;
     const glm::vec3 onScreen = sx * r + sy * u;
-    const float t = -onScreen.y / f.y;
-    return std::make_pair(onScreen + t * f, glm::dot(onScreen, f) + t);
+    const float t = -ground.Height(onScreen) / facing;
+    return std::make_pair(ground.Coordinates(onScreen + t * f), glm::dot(onScreen, f) + t);
   };
-  const glm::vec3 p00 = worldAt(0, 0).first, p10 = worldAt(1, 0).first, p01 = worldAt(0, 1).first;
+  const glm::vec2 p00 = planeAt(0, 0).first, p10 = planeAt(1, 0).first, p01 = planeAt(0, 1).first;
   const float xPerPixel = glm::length(glm::vec2(p10.x - p00.x, p01.x - p00.x));
-  const float zPerPixel = glm::length(glm::vec2(p10.z - p00.z, p01.z - p00.z));
+  const float zPerPixel = glm::length(glm::vec2(p10.y - p00.y, p01.y - p00.y));
   auto lineCover = [](float coordinate, float perPixel, float spacing) {
     const float distance = std::fabs(coordinate - spacing * std::round(coordinate / spacing)) / perPixel;
     return std::clamp(1.6f - distance, 0.0f, 1.0f);
   };
   for (int y = 0; y < canvas.height; ++y) {
     for (int x = 0; x < canvas.width; ++x) {
-      const auto [p, depth] = worldAt(x + 0.5f, y + 0.5f);
-      if (p.x < patch.minX || p.x > patch.maxX || p.z < patch.minZ || p.z > patch.maxZ) continue;
+      const auto [p, depth] = planeAt(x + 0.5f, y + 0.5f);
+      if (p.x < patch.min.x || p.x > patch.max.x || p.y < patch.min.y || p.y > patch.max.y) continue;
       const size_t i = canvas.Index(x, y);
-      const float grid = std::max(lineCover(p.x, xPerPixel, kGridSpacing), lineCover(p.z, zPerPixel, kGridSpacing));
-      // The world axes (x = 0, z = 0) drawn darker show how far the body travels.
-      const float axis = std::max(lineCover(p.x, xPerPixel, 1e6f), lineCover(p.z, zPerPixel, 1e6f));
+      const float grid = std::max(lineCover(p.x, xPerPixel, kGridSpacing), lineCover(p.y, zPerPixel, kGridSpacing));
+      // The lines through the origin drawn darker show how far the body travels.
+      const float axis = std::max(lineCover(p.x, xPerPixel, 1e6f), lineCover(p.y, zPerPixel, 1e6f));
       glm::vec3 colour = glm::mix(kGround, kGridLine, grid);
       colour = glm::mix(colour, kAxisLine, axis);
       canvas.colour[i] = colour;
@@ -227,13 +259,13 @@ void DrawGround(Canvas& canvas, const Camera& camera, const GroundPatch& patch) 
   }
 }
 
-void DrawShadows(Canvas& canvas, const Camera& camera, const PosedBoxes& posed) {
+void DrawShadows(Canvas& canvas, const Camera& camera, const GroundPlane& ground, const PosedBoxes& posed) {
   std::vector<bool> shadow(canvas.id.size(), false);
   for (const auto& corners : posed.corners) {
     // The box's vertical projection is the hull of its flattened corners, which
     // the fan of flattened triangles from corner 0 covers.
     std::array<glm::vec3, 8> flat;
-    for (int c = 0; c < 8; ++c) flat[c] = camera.Project(glm::vec3(corners[c].x, 0.0f, corners[c].z));
+    for (int c = 0; c < 8; ++c) flat[c] = camera.Project(ground.Below(corners[c]));
     for (int b = 1; b < 8; ++b) {
       for (int c = b + 1; c < 8; ++c) {
         Rasterise(canvas, flat[0], flat[b], flat[c], [&](size_t i, float) { shadow[i] = true; });
@@ -368,6 +400,10 @@ int PreviewSheetHeight(const PreviewOptions& options, int frameCount) {
 std::string WritePreviewSheet(const Clip& clip, const PreviewOptions& options, const std::string& pngPath) {
   if (std::string problem = clip.Validate(); !problem.empty()) return "cannot draw the clip: " + problem;
   if (options.keyFrames < 1 || options.columns < 1) return "a preview needs at least one frame and one column";
+  // Up to 60 deg of slope: steeper ground is a wall, not ground.
+  if (!(glm::length(options.groundNormal) > 0.0f) || !(glm::normalize(options.groundNormal).y >= 0.5f)) {
+    return "the preview's ground normal must point up, at most 60 deg from +Y";
+  }
   if (options.cellWidth < 64 || options.cellHeight < kLabelHeight + 64 || options.cellWidth > 4096 ||
       options.cellHeight > 4096) {
     return "preview cells must be 64 to 4096 pixels wide and " + std::to_string(kLabelHeight + 64) +
@@ -386,28 +422,26 @@ std::string WritePreviewSheet(const Clip& clip, const PreviewOptions& options, c
 
   // Frame the whole motion (every frame, not only the key frames, so sheets of
   // different key-frame counts agree) with its shadow on the ground.
-  Camera camera = MakeCamera();
+  const GroundPlane ground = MakeGroundPlane(options);
+  Camera camera = MakeCamera(ground);
   glm::vec2 screenMin(std::numeric_limits<float>::max()), screenMax(-std::numeric_limits<float>::max());
-  GroundPatch patch{std::numeric_limits<float>::max(), -std::numeric_limits<float>::max(),
-                    std::numeric_limits<float>::max(), -std::numeric_limits<float>::max()};
+  GroundPatch patch{glm::vec2(std::numeric_limits<float>::max()), glm::vec2(-std::numeric_limits<float>::max())};
   std::vector<PosedBoxes> keyPoses;
   for (int f = 0; f < frameCount; ++f) {
     PosedBoxes posed = Pose(clip, boxes, f);
     for (const auto& corners : posed.corners) {
       for (const glm::vec3& p : corners) {
-        for (const glm::vec3& q : {p, glm::vec3(p.x, 0.0f, p.z)}) {
+        for (const glm::vec3& q : {p, ground.Below(p)}) {
           const glm::vec2 s(glm::dot(q, camera.right), glm::dot(q, camera.up));
           screenMin = glm::min(screenMin, s);
           screenMax = glm::max(screenMax, s);
         }
-        patch = {std::min(patch.minX, p.x), std::max(patch.maxX, p.x), std::min(patch.minZ, p.z),
-                 std::max(patch.maxZ, p.z)};
+        patch = {glm::min(patch.min, ground.Coordinates(p)), glm::max(patch.max, ground.Coordinates(p))};
       }
     }
     if (std::find(keyFrames.begin(), keyFrames.end(), f) != keyFrames.end()) keyPoses.push_back(std::move(posed));
   }
-  patch = {patch.minX - kGroundPadding, patch.maxX + kGroundPadding, patch.minZ - kGroundPadding,
-           patch.maxZ + kGroundPadding};
+  patch = {patch.min - kGroundPadding, patch.max + kGroundPadding};
   const int drawWidth = options.cellWidth * kSupersample,
             drawHeight = (options.cellHeight - kLabelHeight) * kSupersample;
   const glm::vec2 extent = glm::max(screenMax - screenMin, glm::vec2(0.1f));
@@ -449,8 +483,8 @@ std::string WritePreviewSheet(const Clip& clip, const PreviewOptions& options, c
       const glm::vec3 sky = glm::mix(kSkyTop, kSkyBottom, float(y) / float(drawHeight));
       for (int x = 0; x < drawWidth; ++x) canvas.colour[canvas.Index(x, y)] = sky;
     }
-    DrawGround(canvas, camera, patch);
-    DrawShadows(canvas, camera, keyPoses[k]);
+    DrawGround(canvas, camera, ground, patch);
+    DrawShadows(canvas, camera, ground, keyPoses[k]);
     DrawBody(canvas, camera, keyPoses[k], colours);
     // Box-filter the supersampled cell into the sheet.
     for (int y = 0; y < options.cellHeight - kLabelHeight; ++y) {

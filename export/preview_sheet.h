@@ -6,12 +6,12 @@
 // What is drawn:
 // - keyFrames frames evenly spaced over the clip, the first and the last included;
 // - every frame from the same fixed three-quarter camera (from the character's
-//   front-left, 55 deg round from its facing, 20 deg above the ground) with an
-//   orthographic view that frames the whole motion, so frames compare in size
-//   and position;
+//   front-left, 55 deg round from its facing, 20 deg above the ground, higher
+//   on a slope that rises towards it) with an orthographic view that frames
+//   the whole motion, so frames compare in size and position;
 // - the bone boxes flat-shaded under one fixed light and z-buffered, outlined
-//   where one box meets another; the ground y = 0 as a grid of 0.5 m squares
-//   with the boxes' shadows straight below;
+//   where one box meets another; the ground (y = 0 or a slope) as a grid of
+//   0.5 m squares with the boxes' shadows straight below;
 // - colours: left limbs orange, right limbs blue, trunk teal, head sand. The body
 //   is drawn in saturated colours and everything else (background, ground,
 //   grid, text) in neutral greys, so the body stays easy to pick out;
@@ -21,6 +21,7 @@
 // each bone instead.
 #pragma once
 
+#include <glm/vec3.hpp>
 #include <string>
 
 #include "export/clip.h"
@@ -33,6 +34,10 @@ struct PreviewOptions {
   int cellWidth = 320;   // pixels per frame, including its margin
   int cellHeight = 300;  // pixels per frame, including the label lines under it
   std::string title;     // empty: "RISE-GEN PREVIEW" and the clip's length
+  // The ground: the plane through groundPoint with normal groundNormal (y = 0
+  // by default; a slope clip passes its slope so the grid lies under the body).
+  glm::vec3 groundPoint{0.0f};
+  glm::vec3 groundNormal{0.0f, 1.0f, 0.0f};  // need not be unit length
 };
 
 // Sheet size in pixels for a clip of `frameCount` frames: columns * cellWidth

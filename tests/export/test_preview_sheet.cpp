@@ -126,6 +126,31 @@ TEST_SUITE("preview_sheet") {
     fs::remove(path);
   }
 
+  TEST_CASE("on a 25 deg slope the body still stands tall in the last cell") {
+    rise::Clip clip = rise::test::RiseClip();
+    const glm::quat slope = glm::angleAxis(glm::radians(-25.0f), glm::vec3(1, 0, 0));  // rises towards +Z
+    for (int f = 0; f < clip.FrameCount(); ++f) {
+      clip.rotations[0][f] = slope * clip.rotations[0][f];
+      clip.rootTranslation[f] = slope * clip.rootTranslation[f];
+    }
+    rise::PreviewOptions options;
+    options.keyFrames = 2;
+    options.groundNormal = slope * glm::vec3(0, 1, 0);
+    const std::string path = TempPath("rise_preview_sheet_slope.png");
+    REQUIRE(rise::WritePreviewSheet(clip, options, path) == "");
+    const Decoded image = ReadPng(path);
+    const Extent lying = BodyExtent(image, 0, image.height - options.cellHeight, options.cellWidth, options.cellHeight);
+    const Extent standing =
+        BodyExtent(image, options.cellWidth, image.height - options.cellHeight, options.cellWidth, options.cellHeight);
+    CHECK(lying.Width() > lying.Height());
+    CHECK(standing.Height() > 1.5 * standing.Width());
+    fs::remove(path);
+    // A ground more than 60 deg from level is refused.
+    options.groundNormal = glm::vec3(1, 0.5f, 0);
+    CHECK(rise::WritePreviewSheet(clip, options, path).find("ground normal") != std::string::npos);
+    CHECK_FALSE(fs::exists(path));
+  }
+
   TEST_CASE("a path in a missing folder gives an error and no file") {
     const std::string path = TempPath("rise_no_such_folder/sheet.png");
     rise::PreviewOptions options;
