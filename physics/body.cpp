@@ -87,6 +87,8 @@ void IntegrateVelocity(Body& body, const glm::vec3& gravity, float h) {
 
 void IntegratePosition(Body& body, float h) {
   body.transform.position += h * body.linearVelocity;
+  body.deltaPosition += h * body.linearVelocity;
+  body.deltaRotation += h * body.angularVelocity;
   const glm::vec3 w = body.angularVelocity;
   const glm::quat q = body.transform.rotation;
   const glm::quat dq = glm::quat(0.0f, w.x, w.y, w.z) * q;

@@ -61,6 +61,12 @@ struct Body {
   glm::vec3 invInertiaLocal{0.0f};
   glm::mat3 invInertiaWorld{0.0f};  // R diag(1/I) R^T, refreshed whenever the rotation changes
 
+  // Motion since the step began (Box2D v3's body deltas): the contact solver measures current
+  // separations from them without re-running the narrow phase. deltaRotation is the integrated
+  // rotation vector, exact to first order over one step's small rotation.
+  glm::vec3 deltaPosition{0.0f};
+  glm::vec3 deltaRotation{0.0f};
+
   float friction = 0.6f;
   float linearDamping = 0.0f;
   float angularDamping = 0.0f;

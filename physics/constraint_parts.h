@@ -146,6 +146,8 @@ inline void SolveAngularLimit(Body& a, Body& b, const glm::vec3& axis, float pos
     bias = soft.biasRate * position;
   }
   const float cdot = glm::dot(axis, b.angularVelocity - a.angularVelocity);
+  // An idle row that would only pull is clamped to zero anyway: skip its effective mass.
+  if (accumulated == 0.0f && cdot + bias >= 0.0f) return;
   const float impulse = -soft.massScale * AngularEffectiveMass(a, b, axis) * (cdot + bias) - soft.impulseScale * accumulated;
   const float newAccumulated = std::max(accumulated + impulse, 0.0f);
   ApplyAngularImpulse(a, b, (newAccumulated - accumulated) * axis);

@@ -19,11 +19,6 @@ namespace {
 
 constexpr uint64_t kBodyPairFlag = uint64_t{1} << 63;
 
-struct Aabb {
-  glm::vec3 min{0.0f};
-  glm::vec3 max{0.0f};
-};
-
 Aabb BoxAabb(const BoxShape& box, const Transform& transform, float margin) {
   const glm::mat3 r = glm::mat3_cast(transform.rotation);
   const glm::vec3 h = box.halfExtents;
@@ -56,8 +51,7 @@ void TangentBasis(const glm::vec3& n, glm::vec3& t1, glm::vec3& t2) {
   t2 = glm::cross(n, t1);
 }
 
-// Fills a contact from a manifold; A may be static (null body).
-void InitContact(Contact& contact, const Manifold& manifold, const Body* a, const Body& b) {
+void InitContact(Contact& contact, const Manifold& manifold) {
   contact.normal = manifold.normal;
   TangentBasis(manifold.normal, contact.tangent[0], contact.tangent[1]);
   contact.pointCount = manifold.pointCount;
@@ -68,8 +62,6 @@ void InitContact(Contact& contact, const Manifold& manifold, const Body* a, cons
     cp.point = mp.point;
     cp.separation = mp.separation;
     cp.id = mp.id;
-    cp.localAnchorA = a ? glm::conjugate(a->transform.rotation) * (mp.point - a->transform.position) : mp.point;
-    cp.localAnchorB = glm::conjugate(b.transform.rotation) * (mp.point - b.transform.position);
   }
 }
 
@@ -119,18 +111,22 @@ uint64_t BodyPairKey(int32_t bodyA, int32_t bodyB) {
 
 void Collide(const std::vector<Body>& bodies, const std::vector<StaticShape>& statics,
              const std::vector<uint64_t>& joinedPairs, const WorldSettings& settings, std::vector<Contact>& contacts,
-             std::vector<Contact>& scratch) {
+             CollideScratch& scratch) {
   const float margin = settings.speculativeDistance;
-  std::vector<Contact>& fresh = scratch;
+  std::vector<Contact>& fresh = scratch.contacts;
   fresh.clear();
 
   const int bodyCount = int(bodies.size());
+  std::vector<Aabb>& bounds = scratch.bodyBounds;
+  bounds.resize(bodies.size());
+  for (int b = 0; b < bodyCount; ++b) bounds[b] = BoxAabb(bodies[b].box, bodies[b].transform, 0.5f * margin);
+
   for (int s = 0; s < int(statics.size()); ++s) {
     const StaticShape& shape = statics[s];
     for (int b = 0; b < bodyCount; ++b) {
       const Body& body = bodies[b];
       if (!FiltersPass(shape.categoryBits, shape.maskBits, body.categoryBits, body.maskBits)) continue;
-      if (!StaticNear(shape, body, BoxAabb(body.box, body.transform, margin), margin)) continue;
+      if (!StaticNear(shape, body, bounds[b], margin)) continue;
       const Manifold manifold = CollideStatic(shape, body, margin);
       if (manifold.pointCount == 0) continue;
       Contact& contact = fresh.emplace_back();
@@ -139,17 +135,16 @@ void Collide(const std::vector<Body>& bodies, const std::vector<StaticShape>& st
       contact.bodyB = b;
       contact.staticShape = s;
       contact.friction = MixFriction(shape.friction, body.friction);
-      InitContact(contact, manifold, nullptr, body);
+      InitContact(contact, manifold);
     }
   }
 
   for (int i = 0; i < bodyCount; ++i) {
-    const Aabb boxI = BoxAabb(bodies[i].box, bodies[i].transform, 0.5f * margin);
     for (int j = i + 1; j < bodyCount; ++j) {
       const Body& a = bodies[i];
       const Body& b = bodies[j];
       if (!FiltersPass(a.categoryBits, a.maskBits, b.categoryBits, b.maskBits)) continue;
-      if (!Overlap(boxI, BoxAabb(b.box, b.transform, 0.5f * margin))) continue;
+      if (!Overlap(bounds[i], bounds[j])) continue;
       const uint64_t key = BodyPairKey(i, j);
       if (std::binary_search(joinedPairs.begin(), joinedPairs.end(), key)) continue;
       const Manifold manifold = CollideBoxes(a.box, a.transform, b.box, b.transform, margin);
@@ -159,7 +154,7 @@ void Collide(const std::vector<Body>& bodies, const std::vector<StaticShape>& st
       contact.bodyA = i;
       contact.bodyB = j;
       contact.friction = MixFriction(a.friction, b.friction);
-      InitContact(contact, manifold, &a, b);
+      InitContact(contact, manifold);
     }
   }
 

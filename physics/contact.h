@@ -16,19 +16,21 @@
 namespace rise::physics {
 
 struct ContactPoint {
-  // Anchors relative to each body's centre in its body frame; for the static side (A) the world
-  // point itself. Both start at the manifold point, so the separation in a later sub-step is
-  // separation + n . (pB - pA) with the anchors carried by the moving bodies.
-  glm::vec3 localAnchorA{0.0f};
-  glm::vec3 localAnchorB{0.0f};
   glm::vec3 point{0.0f};     // world, at the Collide stage
   float separation = 0.0f;   // m, at the Collide stage, negative when overlapping
   uint32_t id = 0;           // feature id from the narrow phase
 
   float normalImpulse = 0.0f;        // N s, per sub-step, >= 0
   float tangentImpulse[2] = {};      // N s, per sub-step
-  float normalMass = 0.0f;
-  float tangentMass[2] = {};
+
+  // Row data fixed for one step (PrepareContacts), as Box2D: row 0 is the normal, rows 1 and 2
+  // the tangents. crossA/B = r x direction; turnA/B = I^-1 crossA/B, the angular velocity change
+  // per unit impulse.
+  glm::vec3 crossA[3];
+  glm::vec3 crossB[3];
+  glm::vec3 turnA[3];
+  glm::vec3 turnB[3];
+  float mass[3] = {};
 };
 
 struct Contact {
@@ -43,6 +45,17 @@ struct Contact {
   int pointCount = 0;
 };
 
+struct Aabb {
+  glm::vec3 min{0.0f};
+  glm::vec3 max{0.0f};
+};
+
+// Storage the Collide stage reuses from step to step, so steady-state steps do not allocate.
+struct CollideScratch {
+  std::vector<Contact> contacts;
+  std::vector<Aabb> bodyBounds;
+};
+
 // Friction of a surface pair: the geometric mean (as Box2D), so either surface can make the
 // pair frictionless and two equal surfaces keep their coefficient.
 float MixFriction(float frictionA, float frictionB);
@@ -54,9 +67,9 @@ uint64_t BodyPairKey(int32_t bodyA, int32_t bodyB);
 // body-body pair in a fixed order, builds its manifold, and copies impulses from `contacts` (last
 // step) into matching points (same pair, same feature id, moved less than the match distance).
 // `joinedPairs` (sorted BodyPairKeys) lists bodies that must not collide. The result replaces
-// `contacts`; `scratch` is reused storage so steady-state steps do not allocate.
+// `contacts`.
 void Collide(const std::vector<Body>& bodies, const std::vector<StaticShape>& statics,
              const std::vector<uint64_t>& joinedPairs, const WorldSettings& settings, std::vector<Contact>& contacts,
-             std::vector<Contact>& scratch);
+             CollideScratch& scratch);
 
 }  // namespace rise::physics

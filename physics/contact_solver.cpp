@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: MIT
 // Contact solver: non-penetration and friction rows of every manifold point.
 //
-// Normal row (per point, n from A to B, anchors rA, rB):
-//   C = s = separation + n . (pB - pA) >= 0, the separation at the current sub-step positions;
-//   Cdot = n . (vB + wB x rB - vA - wA x rA);  J = [-n, -rA x n, n, rB x n];
+// Normal row (per point, n from A to B, anchors rA = p - xA, rB = p - xB fixed for the step):
+//   C = s >= 0, the separation at the current sub-step, from the body deltas since the step began:
+//       s = separation + n . (dxB - dxA) + dthetaB . (rB x n) - dthetaA . (rA x n)
+//   Cdot = n . (vB - vA) + wB . (rB x n) - wA . (rA x n);  J = [-n, -rA x n, n, rB x n];
 //   K = mA + mB + (rA x n) . IA^-1 (rA x n) + (rB x n) . IB^-1 (rB x n).
 //   s > 0 (speculative): bias = s / h, so the bodies may close the gap this sub-step but not more.
 //   s <= 0 and useBias: soft, bias = max(biasRate s, -pushMaxSpeed); impulse scaled by the
 //   softness (constraint_parts.h). Accumulated impulse >= 0.
 // Friction rows along the tangents t1, t2 (same form with t instead of n), no bias; the
 // accumulated tangent impulse vector is clamped to the disc |lambda_t| <= mu lambda_n (Coulomb cone).
+// Anchors, inverse inertias and effective masses are frozen at PrepareContacts, as in Box2D v3:
+// within one 1/240 s step a body turns by a few hundredths of a radian at most.
 //
 // Why soft step + relax: the biased solve pushes overlap out as a damped spring, but the
 // velocity it adds to do so is removed by the unbiased relax pass after positions are
@@ -19,7 +22,6 @@
 #include "physics/contact_solver.h"
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -32,20 +34,44 @@ Body& SideA(const Contact& contact, std::vector<Body>& bodies, Body& staticBody)
   return contact.bodyA >= 0 ? bodies[contact.bodyA] : staticBody;
 }
 
+// Relative velocity of B against A along row `row` of a point.
+float RowVelocity(const Body& a, const Body& b, const ContactPoint& cp, const glm::vec3& direction, int row) {
+  return glm::dot(direction, b.linearVelocity - a.linearVelocity) + glm::dot(b.angularVelocity, cp.crossB[row]) -
+         glm::dot(a.angularVelocity, cp.crossA[row]);
+}
+
+void ApplyRowImpulse(Body& a, Body& b, const ContactPoint& cp, const glm::vec3& direction, int row, float impulse) {
+  a.linearVelocity -= (a.invMass * impulse) * direction;
+  a.angularVelocity -= impulse * cp.turnA[row];
+  b.linearVelocity += (b.invMass * impulse) * direction;
+  b.angularVelocity += impulse * cp.turnB[row];
+}
+
 }  // namespace
 
-void PrepareContacts(std::vector<Contact>& contacts, const std::vector<Body>& bodies, const Body& staticBody,
+void PrepareContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Body& staticBody,
                      const SolverContext& context) {
+  for (Body& body : bodies) {
+    body.deltaPosition = glm::vec3(0.0f);
+    body.deltaRotation = glm::vec3(0.0f);
+  }
   for (Contact& contact : contacts) {
-    const Body& a = contact.bodyA >= 0 ? bodies[contact.bodyA] : staticBody;
+    const Body& a = SideA(contact, bodies, staticBody);
     const Body& b = bodies[contact.bodyB];
+    const glm::vec3 directions[3] = {contact.normal, contact.tangent[0], contact.tangent[1]};
     for (int i = 0; i < contact.pointCount; ++i) {
       ContactPoint& cp = contact.points[i];
-      const glm::vec3 rA = a.transform.rotation * cp.localAnchorA;
-      const glm::vec3 rB = b.transform.rotation * cp.localAnchorB;
-      cp.normalMass = LinearEffectiveMass(a, b, rA, rB, contact.normal);
-      cp.tangentMass[0] = LinearEffectiveMass(a, b, rA, rB, contact.tangent[0]);
-      cp.tangentMass[1] = LinearEffectiveMass(a, b, rA, rB, contact.tangent[1]);
+      const glm::vec3 rA = cp.point - a.transform.position;
+      const glm::vec3 rB = cp.point - b.transform.position;
+      for (int row = 0; row < 3; ++row) {
+        cp.crossA[row] = glm::cross(rA, directions[row]);
+        cp.crossB[row] = glm::cross(rB, directions[row]);
+        cp.turnA[row] = a.invInertiaWorld * cp.crossA[row];
+        cp.turnB[row] = b.invInertiaWorld * cp.crossB[row];
+        const float k = a.invMass + b.invMass + glm::dot(cp.crossA[row], cp.turnA[row]) +
+                        glm::dot(cp.crossB[row], cp.turnB[row]);
+        cp.mass[row] = k > 0.0f ? 1.0f / k : 0.0f;
+      }
       if (!context.warmStart) {
         cp.normalImpulse = 0.0f;
         cp.tangentImpulse[0] = cp.tangentImpulse[1] = 0.0f;
@@ -60,11 +86,9 @@ void WarmStartContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies
     Body& b = bodies[contact.bodyB];
     for (int i = 0; i < contact.pointCount; ++i) {
       const ContactPoint& cp = contact.points[i];
-      const glm::vec3 rA = a.transform.rotation * cp.localAnchorA;
-      const glm::vec3 rB = b.transform.rotation * cp.localAnchorB;
-      const glm::vec3 impulse = cp.normalImpulse * contact.normal + cp.tangentImpulse[0] * contact.tangent[0] +
-                                cp.tangentImpulse[1] * contact.tangent[1];
-      ApplyLinearImpulse(a, b, rA, rB, impulse);
+      ApplyRowImpulse(a, b, cp, contact.normal, 0, cp.normalImpulse);
+      ApplyRowImpulse(a, b, cp, contact.tangent[0], 1, cp.tangentImpulse[0]);
+      ApplyRowImpulse(a, b, cp, contact.tangent[1], 2, cp.tangentImpulse[1]);
     }
   }
 }
@@ -75,15 +99,12 @@ void SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Bo
     Body& a = SideA(contact, bodies, staticBody);
     Body& b = bodies[contact.bodyB];
     const glm::vec3 n = contact.normal;
+    const float approach = glm::dot(n, b.deltaPosition - a.deltaPosition);
 
     for (int i = 0; i < contact.pointCount; ++i) {
       ContactPoint& cp = contact.points[i];
-      const glm::vec3 rA = a.transform.rotation * cp.localAnchorA;
-      const glm::vec3 rB = b.transform.rotation * cp.localAnchorB;
-      const glm::vec3 pA = a.transform.position + rA;
-      const glm::vec3 pB = b.transform.position + rB;
-      const float s = cp.separation + glm::dot(n, pB - pA);
-
+      const float s = cp.separation + approach + glm::dot(b.deltaRotation, cp.crossB[0]) -
+                      glm::dot(a.deltaRotation, cp.crossA[0]);
       float bias = 0.0f;
       Softness soft = kRigid;
       if (s > 0.0f) {
@@ -92,22 +113,19 @@ void SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Bo
         soft = context.contactSoftness;
         bias = std::max(soft.biasRate * s, -context.contactPushMaxSpeed);
       }
-      const float vn = glm::dot(n, PointVelocity(b, rB) - PointVelocity(a, rA));
-      const float impulse = -soft.massScale * cp.normalMass * (vn + bias) - soft.impulseScale * cp.normalImpulse;
+      const float vn = RowVelocity(a, b, cp, n, 0);
+      const float impulse = -soft.massScale * cp.mass[0] * (vn + bias) - soft.impulseScale * cp.normalImpulse;
       const float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
-      ApplyLinearImpulse(a, b, rA, rB, (newImpulse - cp.normalImpulse) * n);
+      ApplyRowImpulse(a, b, cp, n, 0, newImpulse - cp.normalImpulse);
       cp.normalImpulse = newImpulse;
     }
 
     for (int i = 0; i < contact.pointCount; ++i) {
       ContactPoint& cp = contact.points[i];
-      const glm::vec3 rA = a.transform.rotation * cp.localAnchorA;
-      const glm::vec3 rB = b.transform.rotation * cp.localAnchorB;
-      const glm::vec3 dv = PointVelocity(b, rB) - PointVelocity(a, rA);
       const float old0 = cp.tangentImpulse[0];
       const float old1 = cp.tangentImpulse[1];
-      float new0 = old0 - cp.tangentMass[0] * glm::dot(dv, contact.tangent[0]);
-      float new1 = old1 - cp.tangentMass[1] * glm::dot(dv, contact.tangent[1]);
+      float new0 = old0 - cp.mass[1] * RowVelocity(a, b, cp, contact.tangent[0], 1);
+      float new1 = old1 - cp.mass[2] * RowVelocity(a, b, cp, contact.tangent[1], 2);
       const float maxFriction = contact.friction * cp.normalImpulse;
       const float lengthSquared = new0 * new0 + new1 * new1;
       if (lengthSquared > maxFriction * maxFriction) {
@@ -117,7 +135,8 @@ void SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Bo
       }
       cp.tangentImpulse[0] = new0;
       cp.tangentImpulse[1] = new1;
-      ApplyLinearImpulse(a, b, rA, rB, (new0 - old0) * contact.tangent[0] + (new1 - old1) * contact.tangent[1]);
+      ApplyRowImpulse(a, b, cp, contact.tangent[0], 1, new0 - old0);
+      ApplyRowImpulse(a, b, cp, contact.tangent[1], 2, new1 - old1);
     }
   }
 }

@@ -11,7 +11,8 @@
 namespace rise::physics {
 
 // `staticBody` stands in for side A of contacts with static geometry: zero velocity, infinite mass.
-void PrepareContacts(std::vector<Contact>& contacts, const std::vector<Body>& bodies, const Body& staticBody,
+// PrepareContacts also zeroes the bodies' step deltas that SolveContacts measures separations with.
+void PrepareContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Body& staticBody,
                      const SolverContext& context);
 void WarmStartContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Body& staticBody);
 void SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Body& staticBody,

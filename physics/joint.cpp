@@ -90,19 +90,22 @@ void PrepareJoint(Joint& joint, const SolverContext& context) {
     joint.lockImpulse[0] = joint.lockImpulse[1] = 0.0f;
     for (int i = 0; i < 3; ++i) joint.lowerImpulse[i] = joint.upperImpulse[i] = 0.0f;
     joint.motorImpulse = glm::vec3(0.0f);
+    joint.angularImpulse = glm::vec3(0.0f);
   }
   if (!joint.enableLimits) {
     for (int i = 0; i < 3; ++i) joint.lowerImpulse[i] = joint.upperImpulse[i] = 0.0f;
   }
   if (!joint.motor.enabled) {
+    // A motor switched off must not be warm-started by its last impulse; the other rows lose
+    // theirs for this one step too, as the combined warm-start vector cannot be split.
+    if (joint.motorImpulse != glm::vec3(0.0f)) joint.angularImpulse = glm::vec3(0.0f);
     joint.motorImpulse = glm::vec3(0.0f);
     joint.motorTorqueWorld = glm::vec3(0.0f);
   }
 }
 
 void WarmStartJoint(Joint& joint, Body& a, Body& b) {
-  const AngularRows rows = RowsFor(joint, a, b);
-  ApplyAngularImpulse(a, b, AngularImpulse(joint, rows));
+  ApplyAngularImpulse(a, b, joint.angularImpulse);
   const glm::vec3 rA = a.transform.rotation * joint.localAnchorA;
   const glm::vec3 rB = b.transform.rotation * joint.localAnchorB;
   ApplyLinearImpulse(a, b, rA, rB, joint.linearImpulse);
@@ -135,6 +138,7 @@ void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bo
   }
 
   SolvePointPart(a, b, joint.localAnchorA, joint.localAnchorB, joint.linearImpulse, context, useBias);
+  joint.angularImpulse = AngularImpulse(joint, rows);
 }
 
 }  // namespace rise::physics

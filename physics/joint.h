@@ -102,6 +102,9 @@ struct Joint {
   float upperImpulse[3] = {};
   glm::vec3 motorImpulse{0.0f};      // in motor-axis coordinates
   glm::vec3 motorTorqueWorld{0.0f};  // last sub-step's motor torque on B, N m
+  // Sum of all angular row impulses on B as one world vector, kept from the last solve so the
+  // warm start need not rebuild the rows.
+  glm::vec3 angularImpulse{0.0f};
 };
 
 // Builds the body-local joint from a world-space bind-pose definition.

@@ -34,7 +34,8 @@ SolverContext MakeContext(const WorldSettings& settings) {
   SolverContext context;
   context.h = settings.timeStep / float(settings.substepCount);
   context.invH = 1.0f / context.h;
-  // A spring stiffer than a quarter of the sub-step rate is no longer resolved by the integrator.
+  // A spring stiffer than a quarter of the sub-step rate is no longer resolved by the integrator:
+  // uncapped 240 Hz joints at one or two sub-steps pumped energy into a swinging chain (measured).
   const float contactHertz = std::min(settings.contactHertz, 0.25f * context.invH);
   context.contactSoftness = MakeSoftness(contactHertz, settings.contactDampingRatio, context.h);
   const float jointHertz = std::min(settings.jointHertz, 0.25f * context.invH);
@@ -102,7 +103,7 @@ StepStatus StoreImpulses(WorldState& state) {
 StepStatus Step(WorldState& state) {
   const SolverContext context = MakeContext(state.settings);
 
-  Collide(state.bodies, state.statics, state.joinedPairs, state.settings, state.contacts, state.contactScratch);
+  Collide(state.bodies, state.statics, state.joinedPairs, state.settings, state.contacts, state.collideScratch);
   PrepareContacts(state.contacts, state.bodies, state.staticBody, context);
   PrepareJoints(state, context);
 

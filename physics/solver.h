@@ -36,7 +36,7 @@ struct WorldState {
   std::vector<StaticShape> statics;
   std::vector<uint64_t> joinedPairs;  // sorted BodyPairKeys of jointed bodies
   std::vector<Contact> contacts;      // sorted by key
-  std::vector<Contact> contactScratch;
+  CollideScratch collideScratch;
   Body staticBody;                    // side A of static contacts and world joints
   StepStatus status;
 };
