@@ -319,8 +319,13 @@ std::string QualityReport::Summary() const {
                  footHeightEndL, footHeightEndR);
   text += std::string(Verdict(penetrationOk)) + Format(" ground          deepest %.3f m below", maxPenetration) +
           (penetrationFrame >= 0 ? " (" + penetrationJoint + Format(", frame %.0f)", penetrationFrame) : "") + "\n";
-  text += std::string(Verdict(slipOk)) + Format(" contact slip    worst %.3f m", maxSlip) +
-          (maxSlipEffector.empty() ? "" : " (" + maxSlipEffector + ")") + "\n";
+  text += std::string(Verdict(slipOk)) + Format(" contact slip    worst %.3f m", maxSlip);
+  for (const EffectorSlip& slip : slips) {
+    if (slip.effector == maxSlipEffector && slip.contacts > 0) {
+      text += " (" + slip.effector + Format(", contact %.2f-%.2f s)", slip.contactStart, slip.contactEnd);
+    }
+  }
+  text += "\n";
   text += std::string(Verdict(jumpOk)) + Format(" no teleport     fastest joint %.1f m/s", maxJointJump) +
           (jumpFrame >= 0 ? " (" + jumpJoint + Format(", frame %.0f)", jumpFrame) : "") + "\n";
   text += std::string(Verdict(passed)) + " overall\n";

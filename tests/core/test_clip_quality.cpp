@@ -102,6 +102,9 @@ TEST_SUITE("clip_quality") {
     CHECK(report.maxSlip == doctest::Approx(0.10).epsilon(1e-3));
     CHECK_FALSE(report.slipOk);
     CHECK(report.jumpOk);
+    const std::string summary = report.Summary();
+    CHECK(summary.find("FAIL contact slip    worst 0.100 m (foot_") != std::string::npos);
+    CHECK(summary.find(", contact 0.00-1.00 s)") != std::string::npos);
   }
 
   TEST_CASE("slip starts again from zero after the foot lifts") {
