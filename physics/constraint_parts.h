@@ -101,8 +101,17 @@ inline float AngularEffectiveMass(const Body& a, const Body& b, const glm::vec3&
 // Point part (ball socket): C = (xB + rB) - (xA + rA) = 0, three rows solved together.
 //   Cdot = vB + wB x rB - vA - wA x rA
 //   K = (mA + mB) 1 - [rA]x IA^-1 [rA]x - [rB]x IB^-1 [rB]x
+// K^-1 is computed once per step (PointPartMass) from the step's starting pose, as contacts do;
+// C and Cdot use the anchors where the bodies are now.
+inline glm::mat3 PointPartMass(const Body& a, const Body& b, const glm::vec3& localAnchorA,
+                               const glm::vec3& localAnchorB) {
+  const glm::mat3 sA = SkewMatrix(a.transform.rotation * localAnchorA);
+  const glm::mat3 sB = SkewMatrix(b.transform.rotation * localAnchorB);
+  return glm::inverse(glm::mat3(a.invMass + b.invMass) - sA * a.invInertiaWorld * sA - sB * b.invInertiaWorld * sB);
+}
+
 inline void SolvePointPart(Body& a, Body& b, const glm::vec3& localAnchorA, const glm::vec3& localAnchorB,
-                           glm::vec3& accumulated, const SolverContext& context, bool useBias) {
+                           const glm::mat3& mass, glm::vec3& accumulated, const SolverContext& context, bool useBias) {
   const glm::vec3 rA = a.transform.rotation * localAnchorA;
   const glm::vec3 rB = b.transform.rotation * localAnchorB;
   const glm::vec3 cdot = PointVelocity(b, rB) - PointVelocity(a, rA);
@@ -113,10 +122,7 @@ inline void SolvePointPart(Body& a, Body& b, const glm::vec3& localAnchorA, cons
     soft = context.jointSoftness;
     bias = soft.biasRate * c;
   }
-  const glm::mat3 sA = SkewMatrix(rA);
-  const glm::mat3 sB = SkewMatrix(rB);
-  const glm::mat3 k = glm::mat3(a.invMass + b.invMass) - sA * a.invInertiaWorld * sA - sB * b.invInertiaWorld * sB;
-  const glm::vec3 impulse = -soft.massScale * (glm::inverse(k) * (cdot + bias)) - soft.impulseScale * accumulated;
+  const glm::vec3 impulse = -soft.massScale * (mass * (cdot + bias)) - soft.impulseScale * accumulated;
   accumulated += impulse;
   ApplyLinearImpulse(a, b, rA, rB, impulse);
 }

@@ -84,7 +84,8 @@ float AnchorSeparation(const Joint& joint, const Body& a, const Body& b) {
   return glm::length(pB - pA);
 }
 
-void PrepareJoint(Joint& joint, const SolverContext& context) {
+void PrepareJoint(Joint& joint, const Body& a, const Body& b, const SolverContext& context) {
+  joint.pointMass = PointPartMass(a, b, joint.localAnchorA, joint.localAnchorB);
   if (!context.warmStart) {
     joint.linearImpulse = glm::vec3(0.0f);
     joint.lockImpulse[0] = joint.lockImpulse[1] = 0.0f;
@@ -137,7 +138,7 @@ void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bo
     SolveAngularEquality(a, b, rows.lockAxis[i], rows.lockPosition[i], joint.lockImpulse[i], context, useBias);
   }
 
-  SolvePointPart(a, b, joint.localAnchorA, joint.localAnchorB, joint.linearImpulse, context, useBias);
+  SolvePointPart(a, b, joint.localAnchorA, joint.localAnchorB, joint.pointMass, joint.linearImpulse, context, useBias);
   joint.angularImpulse = AngularImpulse(joint, rows);
 }
 

@@ -105,6 +105,7 @@ struct Joint {
   // Sum of all angular row impulses on B as one world vector, kept from the last solve so the
   // warm start need not rebuild the rows.
   glm::vec3 angularImpulse{0.0f};
+  glm::mat3 pointMass{0.0f};  // K^-1 of the point part for this step
 };
 
 // Builds the body-local joint from a world-space bind-pose definition.
@@ -117,7 +118,7 @@ glm::quat RelativeRotation(const Joint& joint, const Body& a, const Body& b);
 float AnchorSeparation(const Joint& joint, const Body& a, const Body& b);
 
 // The solver trio every joint type goes through (dispatch in joint.cpp).
-void PrepareJoint(Joint& joint, const SolverContext& context);
+void PrepareJoint(Joint& joint, const Body& a, const Body& b, const SolverContext& context);
 void WarmStartJoint(Joint& joint, Body& a, Body& b);
 void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bool useBias);
 

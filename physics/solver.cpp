@@ -46,7 +46,9 @@ SolverContext MakeContext(const WorldSettings& settings) {
 }
 
 void PrepareJoints(WorldState& state, const SolverContext& context) {
-  for (Joint& joint : state.joints) PrepareJoint(joint, context);
+  for (Joint& joint : state.joints) {
+    PrepareJoint(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB], context);
+  }
 }
 
 void IntegrateVelocities(WorldState& state, float h) {
