@@ -218,7 +218,7 @@ BipedDef MakeBipedDef(float heightM, float massKg, const SegmentOverrides& overr
     add("upper_arm" + s, "chest", {sign * shoulderX, (1.0f - kShoulderBelowNeck) * chest.length, 0}, &upper,
         {0, -0.5f * upper.length, 0},
         joint(JointKind::kUniversal, TorquePerKg::kShoulder,
-              {Dof("flexion", -kX, -60, 170), Dof("abduction", Side(left, kZ), -30, 160)}));
+              {Dof("flexion", -kX, -60, 170), Dof("abduction", Side(left, kZ), -30, 80)}));
     add("forearm" + s, "upper_arm" + s, {0, -upper.length, 0}, &fore, {0, -0.5f * fore.length, 0},
         joint(JointKind::kHinge, TorquePerKg::kElbow, {Dof("flexion", -kX, 0, 150)}));
     add("hand" + s, "forearm" + s, {0, -fore.length, 0}, &hand, {0, -0.5f * hand.length, 0},

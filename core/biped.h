@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: MIT
+// The simulated biped: the 16 boxes and 15 joints of a BipedDef inside a physics::World, the
+// start poses (bind pose and the lying postures), and the state read back for the controller
+// and the recorder.
+//
+// Poses are given in the skeleton's convention (export/skeleton.h): a root transform (world
+// position and rotation of the pelvis joint frame) plus one local rotation per skeleton joint
+// (child relative to parent, identity at the bind pose). A segment's box hangs rigidly in its
+// joint frame, so the world pose of every body follows by forward kinematics.
+//
+// Engine joints (physics/joint.h) measure qRel in a joint frame F fixed in both bodies at the
+// bind pose; F's x axis is the hinge axis or, for ball and universal joints, the twist axis, and
+// for a universal joint F's y and z are the BoneDef's first and second DOF axes. A skeleton local
+// rotation q and the engine's qRel relate by qRel = conj(F) q F, so motor targets are set in
+// skeleton terms with SetLocalTarget.
+//
+// Limits: hinge and universal limits are the BoneDef's DOF limits exactly. A ball joint (spine,
+// neck) has the BoneDef's twist limit and one swing cone whose half-angle is the largest of its
+// flexion and side-bend limits, since the engine limits swing by a cone.
+#pragma once
+
+#include "core/biped_def.h"
+#include "core/rise_spec.h"
+#include "physics/world.h"
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace rise {
+
+struct BipedPose {
+  physics::Transform root;      // world pose of the pelvis joint frame
+  std::vector<glm::quat> local; // per skeleton joint; local[0] is ignored (the root is `root`)
+};
+
+// Lowest box corners are put this far above the ground, so the first step starts without overlap.
+constexpr float kGroundClearance = 0.005f;
+
+// World settings for simulating the biped: the engine defaults with stiffer contacts. The soft
+// contact is relative to the mass of the body touching the ground, so a light box carrying the
+// trunk through a joint sinks: lying on a side, the 2 kg upper arm under the chest sank 13 mm
+// at the default 30 Hz and 3 mm at 60 Hz (measured, 1.75 m / 70 kg, 240 Hz with 4 sub-steps).
+physics::WorldSettings BipedWorldSettings();
+
+// The ground of a terrain: a plane through the origin rising toward +Z by slopeDeg.
+physics::PlaneShape GroundPlane(double slopeDeg);
+// Adds that plane to the world with the terrain's friction.
+physics::StaticShapeId AddGround(physics::World& world, const TerrainSpec& terrain);
+
+// The standing bind pose: every local rotation identity, the pelvis at its rest offset.
+BipedPose BindPose(const BipedDef& def);
+
+// The start pose of a clip: the posture's root rotation and joint angles (start.jointsDeg
+// replacing the posture's own), turned by start.headingDeg about +Y, tilted onto the slope, and
+// moved along the ground normal so the lowest box corner is kGroundClearance + start.dropHeightM
+// above the ground. Postures are described in rise_spec.h.
+BipedPose StartPose(const BipedDef& def, const StartSpec& start, double slopeDeg);
+
+// World transform of every skeleton joint frame for a pose (end joints included).
+std::vector<physics::Transform> JointWorldTransforms(const BipedDef& def, const BipedPose& pose);
+
+// Signed distance of the lowest box corner of the pose above a plane, m (negative: below it).
+float LowestCorner(const BipedDef& def, const BipedPose& pose, const physics::PlaneShape& plane);
+
+class Biped {
+ public:
+  // Creates the bodies and joints of `def` in `world` at `pose`, with joint limits on and servos
+  // off (a ragdoll). Every box gets the friction given (use the terrain's, so that the engine's
+  // geometric-mean mixing keeps the terrain's coefficient). Bodies joined by a joint do not
+  // collide with each other (the engine filters jointed pairs); every other pair does.
+  Biped(const BipedDef& def, physics::World& world, const BipedPose& pose, float friction);
+
+  const BipedDef& Def() const { return def_; }
+
+  // Engine ids by skeleton joint index: invalid for end joints (no body) and for the root (no joint).
+  physics::BodyId BodyOf(int joint) const { return bodies_[joint]; }
+  physics::JointId JointOf(int joint) const { return joints_[joint]; }
+
+  // Moves every body to a pose with zero velocity (e.g. to restart an attempt).
+  void SetPose(const BipedPose& pose);
+
+  // State, read from the world.
+  std::vector<physics::Transform> JointWorldTransforms() const;  // every skeleton joint, ends included
+  BipedPose Pose() const;                                       // root + local rotations (clip keys)
+  glm::vec3 CenterOfMass() const;                               // whole body, world, m
+  glm::vec3 CenterOfMassVelocity() const;                       // m/s
+  float MaxBodySpeed() const;                                   // largest |v| of a box centre, m/s
+  float LowestCorner(const physics::PlaneShape& plane) const;   // as the free function, for the live state
+
+  // Servos (the engine's PD motors). Gains and torque caps default to the BipedDef's.
+  void SetServosEnabled(bool enabled);
+  void SetServoGains(int joint, float kp, float kd, float maxTorqueNm);
+  // Target local rotation of a joint in skeleton terms (child relative to parent).
+  void SetLocalTarget(int joint, const glm::quat& local);
+  void SetTargetPose(const BipedPose& pose);  // every jointed bone's local rotation
+  // Local rotation of a joint as the engine measures it (skeleton terms).
+  glm::quat LocalRotation(int joint) const;
+
+ private:
+  BipedDef def_;
+  physics::World* world_;
+  std::vector<physics::BodyId> bodies_;   // per skeleton joint
+  std::vector<physics::JointId> joints_;  // per skeleton joint
+  std::vector<glm::quat> frames_;         // F per skeleton joint (identity where no joint)
+};
+
+}  // namespace rise
