@@ -56,6 +56,7 @@ struct SolverContext {
   float h = 0.0f;     // sub-step, s
   float invH = 0.0f;  // 1/s
   Softness contactSoftness;
+  Softness staticContactSoftness;  // against static geometry: twice as stiff (Box2D v3)
   Softness jointSoftness;
   float contactPushMaxSpeed = 0.0f;  // m/s
   bool warmStart = true;

@@ -8,7 +8,8 @@
 //   K = mA + mB + (rA x n) . IA^-1 (rA x n) + (rB x n) . IB^-1 (rB x n).
 //   s > 0 (speculative): bias = s / h, so the bodies may close the gap this sub-step but not more.
 //   s <= 0 and useBias: soft, bias = max(biasRate s, -pushMaxSpeed); impulse scaled by the
-//   softness (constraint_parts.h). Accumulated impulse >= 0.
+//   softness (constraint_parts.h), twice as stiff against static geometry. Accumulated impulse >= 0.
+//   At rest the soft normal row settles at s = -g / (2 pi f)^2: 0.07 mm on the ground at 60 Hz.
 // Friction rows along the tangents t1, t2 (same form with t instead of n), no bias; the
 // accumulated tangent impulse vector is clamped to the disc |lambda_t| <= mu lambda_n (Coulomb cone).
 // Anchors, inverse inertias and effective masses are frozen at PrepareContacts, as in Box2D v3:
@@ -100,6 +101,7 @@ void SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Bo
     Body& b = bodies[contact.bodyB];
     const glm::vec3 n = contact.normal;
     const float approach = glm::dot(n, b.deltaPosition - a.deltaPosition);
+    const Softness& pushSoftness = contact.bodyA >= 0 ? context.contactSoftness : context.staticContactSoftness;
 
     for (int i = 0; i < contact.pointCount; ++i) {
       ContactPoint& cp = contact.points[i];
@@ -110,7 +112,7 @@ void SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Bo
       if (s > 0.0f) {
         bias = s * context.invH;
       } else if (useBias) {
-        soft = context.contactSoftness;
+        soft = pushSoftness;
         bias = std::max(soft.biasRate * s, -context.contactPushMaxSpeed);
       }
       const float vn = RowVelocity(a, b, cp, n, 0);

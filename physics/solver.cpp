@@ -38,6 +38,9 @@ SolverContext MakeContext(const WorldSettings& settings) {
   // uncapped 240 Hz joints at one or two sub-steps pumped energy into a swinging chain (measured).
   const float contactHertz = std::min(settings.contactHertz, 0.25f * context.invH);
   context.contactSoftness = MakeSoftness(contactHertz, settings.contactDampingRatio, context.h);
+  // Only one side moves against static geometry, so the same response needs half the effective
+  // mass-weighted stiffness; doubling the frequency keeps resting bodies shallower in the ground.
+  context.staticContactSoftness = MakeSoftness(2.0f * contactHertz, settings.contactDampingRatio, context.h);
   const float jointHertz = std::min(settings.jointHertz, 0.25f * context.invH);
   context.jointSoftness = MakeSoftness(jointHertz, settings.jointDampingRatio, context.h);
   context.contactPushMaxSpeed = settings.contactPushMaxSpeed;
