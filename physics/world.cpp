@@ -131,6 +131,12 @@ glm::quat World::GetJointRelativeRotation(JointId joint) const {
   return RelativeRotation(j, a, state_.bodies[j.bodyB]);
 }
 
+glm::vec3 World::GetJointAnchor(JointId joint) const {
+  const Joint& j = JointAt(joint);
+  const Body& b = state_.bodies[j.bodyB];
+  return b.transform.position + b.transform.rotation * j.localAnchorB;
+}
+
 float World::GetJointAnchorSeparation(JointId joint) const {
   const Joint& j = JointAt(joint);
   const Body& a = j.bodyA >= 0 ? state_.bodies[j.bodyA] : state_.staticBody;

@@ -79,6 +79,8 @@ class World {
   int JointCount() const { return int(state_.joints.size()); }
   // Rotation of B's joint frame relative to A's; identity at the bind pose.
   glm::quat GetJointRelativeRotation(JointId joint) const;
+  // World position of the joint's anchor as carried by body B, m.
+  glm::vec3 GetJointAnchor(JointId joint) const;
   // Distance between the joint's two anchor points, m; the joint's position error.
   float GetJointAnchorSeparation(JointId joint) const;
   // Torque the motor applied to body B in the last sub-step (A got the opposite), N m, world.

@@ -105,6 +105,26 @@ TEST_SUITE("physics.contact_solver") {
     CHECK(std::fabs(slideSpeed - expected * seconds) / (expected * seconds) < 0.05f);
   }
 
+  TEST_CASE("a box rests on a static box step") {
+    World world;
+    world.AddStaticPlane(PlaneShape{}, 0.6f);
+    Transform stepPose;
+    stepPose.position = glm::vec3(0.0f, 0.1f, 0.0f);
+    world.AddStaticBox(BoxShape{glm::vec3(0.5f, 0.1f, 0.5f)}, stepPose, 0.6f);
+    const BodyId box = AddBox(world, glm::vec3(0.1f, 0.4f, 0.0f), glm::vec3(0.2f), 8.0f, 0.6f);
+    for (int i = 0; i < 240 * 3; ++i) world.Step();
+    const float bottom = LowestCornerHeight(world, box);
+    std::vector<ContactInfo> contacts;
+    world.GetGroundContacts(box, contacts);
+    float force = 0.0f;
+    for (const ContactInfo& c : contacts) force += c.normalForce;
+    INFO("bottom " << bottom << " m (step top 0.2 m), ground force " << force << " N");
+    CHECK(std::fabs(bottom - 0.2f) < 1e-3f);
+    CHECK(glm::length(world.GetLinearVelocity(box)) < 1e-3f);
+    CHECK(force == doctest::Approx(8.0f * 9.81f).epsilon(0.01));
+    for (const ContactInfo& c : contacts) CHECK(c.staticShape.index == 1);
+  }
+
   TEST_CASE("a stack of 8 boxes stands for 10 s") {
     World world;
     world.AddStaticPlane(PlaneShape{}, 0.6f);
