@@ -116,6 +116,8 @@ void SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Bo
         bias = std::max(soft.biasRate * s, -context.contactPushMaxSpeed);
       }
       const float vn = RowVelocity(a, b, cp, n, 0);
+      // A speculative point that is not closing its gap this sub-step stays at zero impulse.
+      if (cp.normalImpulse == 0.0f && vn + bias >= 0.0f) continue;
       const float impulse = -soft.massScale * cp.mass[0] * (vn + bias) - soft.impulseScale * cp.normalImpulse;
       const float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
       ApplyRowImpulse(a, b, cp, n, 0, newImpulse - cp.normalImpulse);
@@ -124,6 +126,8 @@ void SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Bo
 
     for (int i = 0; i < contact.pointCount; ++i) {
       ContactPoint& cp = contact.points[i];
+      // Without normal impulse the friction disc is a point: nothing to apply or to remove.
+      if (cp.normalImpulse == 0.0f && cp.tangentImpulse[0] == 0.0f && cp.tangentImpulse[1] == 0.0f) continue;
       const float old0 = cp.tangentImpulse[0];
       const float old1 = cp.tangentImpulse[1];
       float new0 = old0 - cp.mass[1] * RowVelocity(a, b, cp, contact.tangent[0], 1);
