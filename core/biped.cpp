@@ -2,17 +2,16 @@
 // Building the biped in the physics world, its start poses, and reading its state back.
 #include "core/biped.h"
 
-#include "base/assert.h"
-
+#include <algorithm>
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
-
-#include <algorithm>
-#include <cmath>
 #include <limits>
 #include <map>
 #include <string>
+
+#include "base/assert.h"
 
 namespace rise {
 namespace {
@@ -20,7 +19,9 @@ namespace {
 constexpr float kPi = 3.14159265358979f;
 const glm::vec3 kAxisX(1, 0, 0), kAxisY(0, 1, 0), kAxisZ(0, 0, 1);
 
-float Radians(double degrees) { return static_cast<float>(degrees) * kPi / 180.0f; }
+float Radians(double degrees) {
+  return static_cast<float>(degrees) * kPi / 180.0f;
+}
 
 // Joint frame F of a bone (see biped.h): x = hinge or twist axis, y and z the swing axes.
 glm::quat EngineFrame(const BoneDef& bone) {
@@ -41,18 +42,24 @@ glm::quat EngineFrame(const BoneDef& bone) {
       x = bone.dofs[2].axis;  // the twist DOF
       y = bone.dofs[0].axis;
       break;
-    default: return glm::quat(1, 0, 0, 0);
+    default:
+      return glm::quat(1, 0, 0, 0);
   }
   return glm::normalize(glm::quat_cast(glm::mat3(x, y, glm::cross(x, y))));
 }
 
-physics::AngleRange RangeOf(const JointDof& dof) { return {Radians(dof.minDeg), Radians(dof.maxDeg)}; }
+physics::AngleRange RangeOf(const JointDof& dof) {
+  return {Radians(dof.minDeg), Radians(dof.maxDeg)};
+}
 
 physics::JointType EngineType(JointKind kind) {
   switch (kind) {
-    case JointKind::kHinge: return physics::JointType::kHinge;
-    case JointKind::kUniversal: return physics::JointType::kUniversal;
-    default: return physics::JointType::kBall;
+    case JointKind::kHinge:
+      return physics::JointType::kHinge;
+    case JointKind::kUniversal:
+      return physics::JointType::kUniversal;
+    default:
+      return physics::JointType::kBall;
   }
 }
 
@@ -70,7 +77,8 @@ float SideTiltDeg(const BipedDef& def) {
   const SkeletonJoint& arm = def.skeleton.joints[def.Find("upper_arm_l")];
   const SkeletonJoint& thigh = def.skeleton.joints[def.Find("thigh_l")];
   const float shoulderReach = bind[def.Find("upper_arm_l")].x + arm.box.halfExtents.x;
-  const float hipReach = std::max(def.skeleton.joints[0].box.halfExtents.x, bind[def.Find("thigh_l")].x + thigh.box.halfExtents.x);
+  const float hipReach =
+      std::max(def.skeleton.joints[0].box.halfExtents.x, bind[def.Find("thigh_l")].x + thigh.box.halfExtents.x);
   const float lever = bind[def.Find("upper_arm_l")].y - bind[0].y;
   return std::atan2(std::max(0.0f, shoulderReach - hipReach), lever) * 180.0f / kPi;
 }
@@ -93,14 +101,21 @@ std::map<std::string, std::vector<float>> PostureAngles(const BipedDef& def, Pos
       const std::string high = left ? "_r" : "_l";
       const float tilt = SideTiltDeg(def);
       const float bend = (left ? 0.5f : -0.5f) * tilt;  // toward the lower side, split over the spine
-      return {{"abdomen", {0, bend, 0}},          {"chest", {0, bend, 0}},
-              {"upper_arm" + low, {80, 0}},       {"forearm" + low, {30}},
-              {"upper_arm" + high, {80, -25}},    {"forearm" + high, {60}},
-              {"thigh" + low, {20, -tilt}},       {"shin" + low, {30}},
-              {"thigh" + high, {70, tilt - 25}},  {"shin" + high, {90}},
-              {"foot_l", {-20, 0}},               {"foot_r", {-20, 0}}};
+      return {{"abdomen", {0, bend, 0}},
+              {"chest", {0, bend, 0}},
+              {"upper_arm" + low, {80, 0}},
+              {"forearm" + low, {30}},
+              {"upper_arm" + high, {80, -25}},
+              {"forearm" + high, {60}},
+              {"thigh" + low, {20, -tilt}},
+              {"shin" + low, {30}},
+              {"thigh" + high, {70, tilt - 25}},
+              {"shin" + high, {90}},
+              {"foot_l", {-20, 0}},
+              {"foot_r", {-20, 0}}};
     }
-    case Posture::kCustom: return {};
+    case Posture::kCustom:
+      return {};
   }
   return {};
 }
@@ -109,10 +124,14 @@ glm::quat PostureRotation(const BipedDef& def, const StartSpec& start) {
   // The side postures' pelvis tilt, hips toward the ground (see SideTiltDeg).
   const glm::quat sideTilt = glm::angleAxis(Radians(SideTiltDeg(def)), kAxisZ);
   switch (start.posture) {
-    case Posture::kSupine: return glm::angleAxis(-0.5f * kPi, kAxisX);     // front up, head to -Z
-    case Posture::kProne: return glm::angleAxis(0.5f * kPi, kAxisX);       // front down, head to +Z
-    case Posture::kSideLeft: return glm::angleAxis(-0.5f * kPi, kAxisZ) * sideTilt;  // left side down, head to +X
-    case Posture::kSideRight: return glm::angleAxis(0.5f * kPi, kAxisZ) * glm::conjugate(sideTilt);  // head to -X
+    case Posture::kSupine:
+      return glm::angleAxis(-0.5f * kPi, kAxisX);  // front up, head to -Z
+    case Posture::kProne:
+      return glm::angleAxis(0.5f * kPi, kAxisX);  // front down, head to +Z
+    case Posture::kSideLeft:
+      return glm::angleAxis(-0.5f * kPi, kAxisZ) * sideTilt;  // left side down, head to +X
+    case Posture::kSideRight:
+      return glm::angleAxis(0.5f * kPi, kAxisZ) * glm::conjugate(sideTilt);  // head to -X
     case Posture::kCustom:
       return glm::angleAxis(Radians(start.rootEulerDeg[0]), kAxisX) *
              glm::angleAxis(Radians(start.rootEulerDeg[1]), kAxisY) *
@@ -186,7 +205,8 @@ BipedPose StartPose(const BipedDef& def, const StartSpec& start, double slopeDeg
   }
   const physics::PlaneShape ground = GroundPlane(slopeDeg);
   const glm::quat slope = glm::angleAxis(-Radians(slopeDeg), kAxisX);  // turns +Y onto the ground normal
-  pose.root.rotation = glm::normalize(slope * glm::angleAxis(Radians(start.headingDeg), kAxisY) * PostureRotation(def, start));
+  pose.root.rotation =
+      glm::normalize(slope * glm::angleAxis(Radians(start.headingDeg), kAxisY) * PostureRotation(def, start));
   pose.root.position = glm::vec3(0.0f);
   const float lift = kGroundClearance + static_cast<float>(start.dropHeightM) - LowestCorner(def, pose, ground);
   pose.root.position = lift * ground.normal;
@@ -232,7 +252,8 @@ Biped::Biped(const BipedDef& def, physics::World& world, const BipedPose& pose, 
     if (bone.kind == JointKind::kBall) {
       joint.twistLimits = RangeOf(bone.dofs[2]);
       float cone = 0.0f;
-      for (int k = 0; k < 2; ++k) cone = std::max({cone, std::fabs(bone.dofs[k].minDeg), std::fabs(bone.dofs[k].maxDeg)});
+      for (int k = 0; k < 2; ++k)
+        cone = std::max({cone, std::fabs(bone.dofs[k].minDeg), std::fabs(bone.dofs[k].maxDeg)});
       joint.swingCone = Radians(cone);
     }
     joint.motor.enabled = false;
@@ -310,7 +331,9 @@ float Biped::MaxBodySpeed() const {
   return fastest;
 }
 
-float Biped::LowestCorner(const physics::PlaneShape& plane) const { return rise::LowestCorner(def_, Pose(), plane); }
+float Biped::LowestCorner(const physics::PlaneShape& plane) const {
+  return rise::LowestCorner(def_, Pose(), plane);
+}
 
 void Biped::SetServosEnabled(bool enabled) {
   for (const physics::JointId joint : joints_) {
@@ -336,7 +359,8 @@ void Biped::SetTargetPose(const BipedPose& pose) {
 
 glm::quat Biped::LocalRotation(int joint) const {
   RISE_ASSERT(joints_[joint].IsValid());
-  return glm::normalize(frames_[joint] * world_->GetJointRelativeRotation(joints_[joint]) * glm::conjugate(frames_[joint]));
+  return glm::normalize(frames_[joint] * world_->GetJointRelativeRotation(joints_[joint]) *
+                        glm::conjugate(frames_[joint]));
 }
 
 }  // namespace rise

@@ -19,20 +19,19 @@
 // flexion and side-bend limits, since the engine limits swing by a cone.
 #pragma once
 
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+#include <vector>
+
 #include "core/biped_def.h"
 #include "core/rise_spec.h"
 #include "physics/world.h"
 
-#include <glm/gtc/quaternion.hpp>
-#include <glm/vec3.hpp>
-
-#include <vector>
-
 namespace rise {
 
 struct BipedPose {
-  physics::Transform root;      // world pose of the pelvis joint frame
-  std::vector<glm::quat> local; // per skeleton joint; local[0] is ignored (the root is `root`)
+  physics::Transform root;       // world pose of the pelvis joint frame
+  std::vector<glm::quat> local;  // per skeleton joint; local[0] is ignored (the root is `root`)
 };
 
 // Lowest box corners are put this far above the ground, so the first step starts without overlap.
@@ -83,11 +82,11 @@ class Biped {
 
   // State, read from the world.
   std::vector<physics::Transform> JointWorldTransforms() const;  // every skeleton joint, ends included
-  BipedPose Pose() const;                                       // root + local rotations (clip keys)
-  glm::vec3 CenterOfMass() const;                               // whole body, world, m
-  glm::vec3 CenterOfMassVelocity() const;                       // m/s
-  float MaxBodySpeed() const;                                   // largest |v| of a box centre, m/s
-  float LowestCorner(const physics::PlaneShape& plane) const;   // as the free function, for the live state
+  BipedPose Pose() const;                                        // root + local rotations (clip keys)
+  glm::vec3 CenterOfMass() const;                                // whole body, world, m
+  glm::vec3 CenterOfMassVelocity() const;                        // m/s
+  float MaxBodySpeed() const;                                    // largest |v| of a box centre, m/s
+  float LowestCorner(const physics::PlaneShape& plane) const;    // as the free function, for the live state
 
   // Servos (the engine's PD motors). Gains and torque caps default to the BipedDef's.
   void SetServosEnabled(bool enabled);

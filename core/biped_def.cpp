@@ -2,9 +2,9 @@
 // Anthropometric body model: Winter's length fractions and Dempster's mass fractions.
 #include "core/biped_def.h"
 
-#include "base/assert.h"
-
 #include <algorithm>
+
+#include "base/assert.h"
 
 namespace rise {
 namespace {
@@ -20,37 +20,42 @@ struct SegmentProportion {
 // Winter's joint heights (fractions of H): ankle 0.039, knee 0.285, hip 0.530,
 // shoulder 0.818, top of head 1.0. The trunk between the hips and the neck
 // base (0.84) is split into pelvis (its box starts below the hip joints, which
-// sit 40 % up from its bottom, as the buttocks hang below them), abdomen and chest; head+neck takes 0.16.
+// sit 40 % up from its bottom, as the buttocks hang below them), abdomen and
+// chest; head+neck takes 0.16.
 // Widths and depths are typical adult breadths; the hand's width is its
 // thickness because the palms face the thighs in the bind pose.
+// One segment per row, as in the tables it comes from.
+// clang-format off
 constexpr SegmentProportion kProportions[] = {
-    {"pelvis", 0.100f, 0.180f, 0.110f, 0.142f},
-    {"abdomen", 0.110f, 0.160f, 0.100f, 0.139f},
-    {"chest", 0.140f, 0.180f, 0.115f, 0.216f},
-    {"head", 0.160f, 0.090f, 0.110f, 0.081f},
-    {"upper_arm_l", 0.186f, 0.055f, 0.055f, 0.028f},
-    {"forearm_l", 0.146f, 0.045f, 0.045f, 0.016f},
-    {"hand_l", 0.108f, 0.020f, 0.050f, 0.006f},
-    {"upper_arm_r", 0.186f, 0.055f, 0.055f, 0.028f},
-    {"forearm_r", 0.146f, 0.045f, 0.045f, 0.016f},
-    {"hand_r", 0.108f, 0.020f, 0.050f, 0.006f},
-    {"thigh_l", 0.245f, 0.080f, 0.085f, 0.100f},
-    {"shin_l", 0.246f, 0.055f, 0.060f, 0.0465f},
-    {"foot_l", 0.152f, 0.055f, 0.039f, 0.0145f},
-    {"thigh_r", 0.245f, 0.080f, 0.085f, 0.100f},
-    {"shin_r", 0.246f, 0.055f, 0.060f, 0.0465f},
-    {"foot_r", 0.152f, 0.055f, 0.039f, 0.0145f},
+    // name         length   width    depth    mass fraction
+    {"pelvis",      0.100f,  0.180f,  0.110f,  0.142f},
+    {"abdomen",     0.110f,  0.160f,  0.100f,  0.139f},
+    {"chest",       0.140f,  0.180f,  0.115f,  0.216f},
+    {"head",        0.160f,  0.090f,  0.110f,  0.081f},
+    {"upper_arm_l", 0.186f,  0.055f,  0.055f,  0.028f},
+    {"forearm_l",   0.146f,  0.045f,  0.045f,  0.016f},
+    {"hand_l",      0.108f,  0.020f,  0.050f,  0.006f},
+    {"upper_arm_r", 0.186f,  0.055f,  0.055f,  0.028f},
+    {"forearm_r",   0.146f,  0.045f,  0.045f,  0.016f},
+    {"hand_r",      0.108f,  0.020f,  0.050f,  0.006f},
+    {"thigh_l",     0.245f,  0.080f,  0.085f,  0.100f},
+    {"shin_l",      0.246f,  0.055f,  0.060f,  0.0465f},
+    {"foot_l",      0.152f,  0.055f,  0.039f,  0.0145f},
+    {"thigh_r",     0.245f,  0.080f,  0.085f,  0.100f},
+    {"shin_r",      0.246f,  0.055f,  0.060f,  0.0465f},
+    {"foot_r",      0.152f,  0.055f,  0.039f,  0.0145f},
 };
+// clang-format on
 constexpr int kSegmentCount = static_cast<int>(sizeof(kProportions) / sizeof(kProportions[0]));
 
-constexpr float kPelvisBelowHip = 0.4f;     // fraction of pelvis length below the hip joints
-constexpr float kShoulderBelowNeck = 0.15f; // fraction of chest length from the neck down to the shoulders
-constexpr float kHeelBehindAnkle = 0.2f;    // fraction of foot length behind the ankle
-constexpr float kHipHalfSpacing = 0.05f;    // hip joint centres at +-0.05 H
+constexpr float kPelvisBelowHip = 0.4f;      // fraction of pelvis length below the hip joints
+constexpr float kShoulderBelowNeck = 0.15f;  // fraction of chest length from the neck down to the shoulders
+constexpr float kHeelBehindAnkle = 0.2f;     // fraction of foot length behind the ankle
+constexpr float kHipHalfSpacing = 0.05f;     // hip joint centres at +-0.05 H
 // Clearance between the hanging arms and the trunk/thighs, and between the thighs:
 // the bind pose must not start with boxes touching.
-constexpr float kArmGap = 0.012f;           // fraction of H
-constexpr float kThighGap = 0.01f;          // metres
+constexpr float kArmGap = 0.012f;   // fraction of H
+constexpr float kThighGap = 0.01f;  // metres
 
 // Servo defaults: the torque cap is reached at this angle error, and damping
 // follows as kp times this time constant. Starting points for the controller.
@@ -66,7 +71,9 @@ JointDof Dof(const char* name, glm::vec3 axis, float minDeg, float maxDeg) {
 }
 
 // Left/right mirrored axis: the given axis for the left side, its negation for the right.
-glm::vec3 Side(bool left, glm::vec3 leftAxis) { return left ? leftAxis : -leftAxis; }
+glm::vec3 Side(bool left, glm::vec3 leftAxis) {
+  return left ? leftAxis : -leftAxis;
+}
 
 }  // namespace
 
@@ -98,7 +105,9 @@ glm::vec3 BipedDef::BindCenterOfMass() const {
   return sum / mass;
 }
 
-float BipedDef::BindHeadTop() const { return skeleton.BindPositions()[skeleton.Find("head_end")].y; }
+float BipedDef::BindHeadTop() const {
+  return skeleton.BindPositions()[skeleton.Find("head_end")].y;
+}
 
 BipedDef MakeBipedDef(float heightM, float massKg, const SegmentOverrides& overrides) {
   RISE_ASSERT(heightM >= 1.2f && heightM <= 2.3f);
@@ -170,8 +179,8 @@ BipedDef MakeBipedDef(float heightM, float massKg, const SegmentOverrides& overr
       joint.box.center = boxCenter;
       // The foot's length runs along z and its depth (height) along y.
       const bool foot = name.rfind("foot", 0) == 0;
-      joint.box.halfExtents = 0.5f * (foot ? glm::vec3(s->width, s->depth, s->length)
-                                           : glm::vec3(s->width, s->length, s->depth));
+      joint.box.halfExtents =
+          0.5f * (foot ? glm::vec3(s->width, s->depth, s->length) : glm::vec3(s->width, s->length, s->depth));
       bone.massKg = s->mass;
     }
     if (bone.maxTorqueNm > 0.0f) {
@@ -197,10 +206,9 @@ BipedDef MakeBipedDef(float heightM, float massKg, const SegmentOverrides& overr
   BoneDef root;
   root.kind = JointKind::kFree;
   add("pelvis", "", {0, hipY, 0}, &pelvis, {0, (0.5f - kPelvisBelowHip) * pelvis.length, 0}, root);
-  add("abdomen", "pelvis", {0, (1.0f - kPelvisBelowHip) * pelvis.length, 0}, &abdomen,
-      {0, 0.5f * abdomen.length, 0}, joint(JointKind::kBall, TorquePerKg::kSpine,
-                                           {Dof("flexion", kX, -25, 45), Dof("bend_left", -kZ, -25, 25),
-                                            Dof("twist_left", kY, -30, 30)}));
+  add("abdomen", "pelvis", {0, (1.0f - kPelvisBelowHip) * pelvis.length, 0}, &abdomen, {0, 0.5f * abdomen.length, 0},
+      joint(JointKind::kBall, TorquePerKg::kSpine,
+            {Dof("flexion", kX, -25, 45), Dof("bend_left", -kZ, -25, 25), Dof("twist_left", kY, -30, 30)}));
   add("chest", "abdomen", {0, abdomen.length, 0}, &chest, {0, 0.5f * chest.length, 0},
       joint(JointKind::kBall, TorquePerKg::kSpine,
             {Dof("flexion", kX, -20, 40), Dof("bend_left", -kZ, -20, 20), Dof("twist_left", kY, -35, 35)}));

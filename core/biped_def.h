@@ -49,16 +49,15 @@
 // engine (physics/joint.h) is in gimbal lock, so arms go overhead by flexion, not abduction.
 #pragma once
 
-#include "export/skeleton.h"
-
+#include <array>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
-
-#include <array>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "export/skeleton.h"
 
 namespace rise {
 
@@ -71,8 +70,8 @@ enum class JointKind {
 };
 
 struct JointDof {
-  std::string name;       // anatomical motion of a positive angle, e.g. "flexion"
-  glm::vec3 axis{0.0f};   // unit axis in the parent joint frame
+  std::string name;      // anatomical motion of a positive angle, e.g. "flexion"
+  glm::vec3 axis{0.0f};  // unit axis in the parent joint frame
   float minDeg = 0.0f;
   float maxDeg = 0.0f;
 };
@@ -101,9 +100,9 @@ struct SegmentOverride {
 using SegmentOverrides = std::map<std::string, SegmentOverride>;
 
 struct BipedDef {
-  float heightM = 0.0f;  // the height asked for; with length overrides the bind pose height can differ
-  float massKg = 0.0f;   // sum of all segment masses
-  Skeleton skeleton;     // 21 joints, names as listed above, boxes in joint frames
+  float heightM = 0.0f;        // the height asked for; with length overrides the bind pose height can differ
+  float massKg = 0.0f;         // sum of all segment masses
+  Skeleton skeleton;           // 21 joints, names as listed above, boxes in joint frames
   std::vector<BoneDef> bones;  // parallel to skeleton.joints
 
   int Find(const std::string& name) const { return skeleton.Find(name); }

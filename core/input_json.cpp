@@ -36,7 +36,9 @@ double ShortestDouble(float value) {
   return value;
 }
 
-std::string Quote(const std::string& s) { return "\"" + s + "\""; }
+std::string Quote(const std::string& s) {
+  return "\"" + s + "\"";
+}
 
 std::string JoinNames(const std::vector<std::string>& names) {
   std::string text;
@@ -47,18 +49,29 @@ std::string JoinNames(const std::vector<std::string>& names) {
 // How a found value is shown in a message: strings quoted, numbers as written, containers by kind.
 std::string Describe(const Json& value) {
   switch (value.type()) {
-    case Json::value_t::string: return Quote(value.get<std::string>()) + " (a string)";
-    case Json::value_t::boolean: return value.get<bool>() ? "true (a boolean)" : "false (a boolean)";
-    case Json::value_t::null: return "null";
-    case Json::value_t::object: return "an object";
-    case Json::value_t::array: return "an array of " + std::to_string(value.size());
-    case Json::value_t::number_float: return FormatNumber(value.get<double>());
-    default: return value.dump();
+    case Json::value_t::string:
+      return Quote(value.get<std::string>()) + " (a string)";
+    case Json::value_t::boolean:
+      return value.get<bool>() ? "true (a boolean)" : "false (a boolean)";
+    case Json::value_t::null:
+      return "null";
+    case Json::value_t::object:
+      return "an object";
+    case Json::value_t::array:
+      return "an array of " + std::to_string(value.size());
+    case Json::value_t::number_float:
+      return FormatNumber(value.get<double>());
+    default:
+      return value.dump();
   }
 }
 
-std::string JoinPath(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
-std::string IndexPath(const std::string& path, size_t index) { return path + "[" + std::to_string(index) + "]"; }
+std::string JoinPath(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+std::string IndexPath(const std::string& path, size_t index) {
+  return path + "[" + std::to_string(index) + "]";
+}
 
 // The closest name by edit distance, or empty when none is close enough to be a likely typo.
 std::string Closest(const std::string& name, const std::vector<std::string>& candidates) {
@@ -77,9 +90,8 @@ std::string Closest(const std::string& name, const std::vector<std::string>& can
 // People name joints after the joint ("knee"), rise-gen after the bone it moves ("shin").
 std::string BoneForJointWord(const std::string& name) {
   static const std::pair<const char*, const char*> kWords[] = {
-      {"knee", "shin"}, {"elbow", "forearm"}, {"hip", "thigh"},   {"shoulder", "upper_arm"},
-      {"ankle", "foot"}, {"wrist", "hand"},   {"neck", "head"},   {"spine", "abdomen"},
-      {"lumbar", "abdomen"}, {"thorax", "chest"}};
+      {"knee", "shin"},  {"elbow", "forearm"}, {"hip", "thigh"},     {"shoulder", "upper_arm"}, {"ankle", "foot"},
+      {"wrist", "hand"}, {"neck", "head"},     {"spine", "abdomen"}, {"lumbar", "abdomen"},     {"thorax", "chest"}};
   for (const auto& word : kWords) {
     const std::string joint = word.first;
     if (name.rfind(joint, 0) == 0) return word.second + name.substr(joint.size());
@@ -203,8 +215,8 @@ class Reader {
       return true;
     }
     const std::string guess = Closest(text, names);
-    return Fail(path, "found " + Quote(text) + (guess.empty() ? "" : " (did you mean " + Quote(guess) + "?)") + ", " +
-                          allowed);
+    return Fail(
+        path, "found " + Quote(text) + (guess.empty() ? "" : " (did you mean " + Quote(guess) + "?)") + ", " + allowed);
   }
 
   bool Vec3(const Json& value, const std::string& path, const Range& range, std::array<double, 3>& out) {
@@ -218,8 +230,9 @@ class Reader {
   }
 
   bool Spec(const Json& root, RiseSpec& spec) {
-    if (!Object(root, "", {"$schema", "character", "start", "terrain", "style", "disturbances", "seed", "fps",
-                           "max_duration_s", "output"})) {
+    if (!Object(root, "",
+                {"$schema", "character", "start", "terrain", "style", "disturbances", "seed", "fps", "max_duration_s",
+                 "output"})) {
       return false;
     }
     if (root.contains("$schema") && !root["$schema"].is_string()) {
@@ -298,7 +311,8 @@ class Reader {
       }
       if (!Vec3(value["root_euler_deg"], at, {-360, 360, "degrees"}, out.rootEulerDeg)) return false;
     }
-    if (value.contains("joints_deg") && !JointsDeg(value["joints_deg"], JoinPath(path, "joints_deg"), out)) return false;
+    if (value.contains("joints_deg") && !JointsDeg(value["joints_deg"], JoinPath(path, "joints_deg"), out))
+      return false;
     if (!OptionalNumber(value, path, "drop_height_m", {0, 2, "m"}, out.dropHeightM)) return false;
     return true;
   }
@@ -413,9 +427,9 @@ bool CheckConsistency(Reader& reader, const RiseSpec& spec) {
   }
   for (size_t i = 0; i < spec.disturbances.size(); ++i) {
     if (spec.disturbances[i].timeS > spec.maxDurationS) {
-      return reader.Fail(IndexPath("disturbances", i) + ".time_s",
-                         "found " + FormatNumber(spec.disturbances[i].timeS) + ", allowed: 0 to max_duration_s (" +
-                             FormatNumber(spec.maxDurationS) + " s)");
+      return reader.Fail(IndexPath("disturbances", i) + ".time_s", "found " + FormatNumber(spec.disturbances[i].timeS) +
+                                                                       ", allowed: 0 to max_duration_s (" +
+                                                                       FormatNumber(spec.maxDurationS) + " s)");
     }
   }
   return true;
@@ -427,8 +441,12 @@ class DuplicateKeyFinder {
  public:
   bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
     switch (event) {
-      case Json::parse_event_t::object_start: frames_.push_back({false, 0, {}, {}}); break;
-      case Json::parse_event_t::array_start: frames_.push_back({true, 0, {}, {}}); break;
+      case Json::parse_event_t::object_start:
+        frames_.push_back({false, 0, {}, {}});
+        break;
+      case Json::parse_event_t::array_start:
+        frames_.push_back({true, 0, {}, {}});
+        break;
       case Json::parse_event_t::key: {
         Frame& frame = frames_.back();
         frame.key = parsed.get<std::string>();
@@ -440,7 +458,9 @@ class DuplicateKeyFinder {
         frames_.pop_back();
         EndValue();
         break;
-      case Json::parse_event_t::value: EndValue(); break;
+      case Json::parse_event_t::value:
+        EndValue();
+        break;
     }
     return true;
   }
@@ -537,7 +557,8 @@ Result<RiseSpec> ParseRiseSpec(const std::string& text, const std::string& fileN
     return error;
   }
   if (!duplicates.duplicatePath.empty()) {
-    return InputError{fileName, duplicates.duplicatePath, "found this key twice in the same object, allowed: once", 0, 0};
+    return InputError{fileName, duplicates.duplicatePath, "found this key twice in the same object, allowed: once", 0,
+                      0};
   }
   return RiseSpecFromJson(root, fileName);
 }
@@ -572,8 +593,7 @@ nlohmann::ordered_json RiseSpecToJson(const RiseSpec& spec) {
   }
   Ordered disturbances = Ordered::array();
   for (const Disturbance& d : spec.disturbances) {
-    disturbances.push_back(
-        {{"time_s", d.timeS}, {"body", d.body}, {"force_n", d.forceN}, {"duration_s", d.durationS}});
+    disturbances.push_back({{"time_s", d.timeS}, {"body", d.body}, {"force_n", d.forceN}, {"duration_s", d.durationS}});
   }
   Ordered start = {{"posture", PostureName(spec.start.posture)}, {"heading_deg", spec.start.headingDeg}};
   if (spec.start.posture == Posture::kCustom) start["root_euler_deg"] = spec.start.rootEulerDeg;

@@ -11,12 +11,11 @@
 // - the first mistake found is the one reported.
 #pragma once
 
+#include <nlohmann/json.hpp>
+#include <string>
+
 #include "core/result.h"
 #include "core/rise_spec.h"
-
-#include <nlohmann/json.hpp>
-
-#include <string>
 
 namespace rise {
 

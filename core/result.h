@@ -7,11 +7,11 @@
 // and what is allowed, so the CLI can print it once and exit with code 2.
 #pragma once
 
-#include "base/assert.h"
-
 #include <string>
 #include <utility>
 #include <variant>
+
+#include "base/assert.h"
 
 namespace rise {
 
@@ -36,8 +36,8 @@ struct InputError {
 template <typename T>
 class Result {
  public:
-  Result(T value) : state_(std::move(value)) {}             // NOLINT: implicit by design, `return value;`
-  Result(InputError error) : state_(std::move(error)) {}    // NOLINT: implicit by design, `return error;`
+  Result(T value) : state_(std::move(value)) {}           // NOLINT: implicit by design, `return value;`
+  Result(InputError error) : state_(std::move(error)) {}  // NOLINT: implicit by design, `return error;`
 
   bool IsOk() const { return state_.index() == 0; }
   explicit operator bool() const { return IsOk(); }

@@ -7,13 +7,13 @@
 // round trip through JSON text (RiseSpecToJson) bit for bit.
 #pragma once
 
-#include "core/biped_def.h"
-
 #include <array>
 #include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
+
+#include "core/biped_def.h"
 
 namespace rise {
 
@@ -23,8 +23,8 @@ enum class Posture { kSupine, kProne, kSideLeft, kSideRight, kCustom };
 const char* PostureName(Posture posture);
 
 struct CharacterSpec {
-  double heightM = 1.75;  // [1.2, 2.3]
-  double massKg = 70.0;   // [30, 200]
+  double heightM = 1.75;      // [1.2, 2.3]
+  double massKg = 70.0;       // [30, 200]
   SegmentOverrides segments;  // per-segment size/mass overrides, keyed by SegmentNames()
 };
 
@@ -54,21 +54,21 @@ struct TerrainSpec {
 };
 
 struct StyleSpec {
-  double speed = 1.0;          // [0.25, 3], pace multiplier of the rise
-  double stepHeightM = 0.08;   // [0.02, 0.3], how high a hand or foot lifts when it moves
-  double stanceWidthM = 0.3;   // [0.1, 0.6], distance between the feet when standing
-  double sway = 0.0;           // [0, 1], secondary swaying motion (priority layer)
-  double swivelDeg = 0.0;      // [-45, 45], knee/elbow bend-plane rotation (bow-legged > 0)
-  double tiredness = 0.0;      // [0, 1], slower, heavier movement
-  double lookAround = 0.0;     // [0, 1], head turns during the rise (priority layer)
+  double speed = 1.0;         // [0.25, 3], pace multiplier of the rise
+  double stepHeightM = 0.08;  // [0.02, 0.3], how high a hand or foot lifts when it moves
+  double stanceWidthM = 0.3;  // [0.1, 0.6], distance between the feet when standing
+  double sway = 0.0;          // [0, 1], secondary swaying motion (priority layer)
+  double swivelDeg = 0.0;     // [-45, 45], knee/elbow bend-plane rotation (bow-legged > 0)
+  double tiredness = 0.0;     // [0, 1], slower, heavier movement
+  double lookAround = 0.0;    // [0, 1], head turns during the rise (priority layer)
 };
 
 // An external push, for testing the feedback: force on one body's centre.
 struct Disturbance {
-  double timeS = 0.0;       // [0, maxDurationS], start time
-  std::string body;         // a joint name from SegmentNames()
+  double timeS = 0.0;                           // [0, maxDurationS], start time
+  std::string body;                             // a joint name from SegmentNames()
   std::array<double, 3> forceN{0.0, 0.0, 0.0};  // world, each component in [-5000, 5000]
-  double durationS = 0.0;   // (0, 5]
+  double durationS = 0.0;                       // (0, 5]
 };
 
 // Output choices the CLI may override.
@@ -83,9 +83,9 @@ struct RiseSpec {
   TerrainSpec terrain;
   StyleSpec style;
   std::vector<Disturbance> disturbances;
-  uint64_t seed = 1;            // [0, 2^53]
-  double fps = 30.0;            // [1, 240]
-  double maxDurationS = 20.0;   // [1, 120]
+  uint64_t seed = 1;           // [0, 2^53]
+  double fps = 30.0;           // [1, 240]
+  double maxDurationS = 20.0;  // [1, 120]
   OutputSpec output;
 };
 

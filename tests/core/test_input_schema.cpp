@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The JSON Schema and the loader must describe the same format: key sets, defaults, ranges, enums.
-#include "core/biped_def.h"
-#include "core/input_json.h"
-#include "test_support.h"
-
 #include <fstream>
 #include <set>
 #include <sstream>
+
+#include "core/biped_def.h"
+#include "core/input_json.h"
+#include "test_support.h"
 
 namespace {
 
@@ -33,7 +33,9 @@ Json Document(const std::vector<std::string>& path, const Json& leaf) {
   return doc;
 }
 
-bool Accepts(const Json& doc) { return rise::RiseSpecFromJson(doc, "schema-test.json").IsOk(); }
+bool Accepts(const Json& doc) {
+  return rise::RiseSpecFromJson(doc, "schema-test.json").IsOk();
+}
 
 // For a numeric leaf: the loader accepts the schema's minimum and maximum and rejects just beyond.
 // `extra` is merged into each document (e.g. a body heavy enough for the largest segment mass).
@@ -88,79 +90,79 @@ void CompareObject(const Json& schemaNode, const Json& resolved, std::vector<std
 }  // namespace
 
 TEST_SUITE("input_schema") {
-TEST_CASE("the schema is draft 2020-12 and every key, default and range agrees with the loader") {
-  const Json schema = LoadSchema();
-  CHECK(schema.at("$schema") == "https://json-schema.org/draft/2020-12/schema");
-  Json resolved = Json::parse(rise::RiseSpecToJson(rise::RiseSpec{}).dump());
-  // root_euler_deg is written only for posture custom; take its default from such a spec.
-  rise::RiseSpec custom;
-  custom.start.posture = rise::Posture::kCustom;
-  resolved["start"]["root_euler_deg"] = Json::parse(rise::RiseSpecToJson(custom).dump())["start"]["root_euler_deg"];
-  CompareObject(schema, resolved, {});
-  // The root is closed, like the loader.
-  CHECK(schema.at("additionalProperties") == false);
-}
-
-TEST_CASE("segment overrides: names and fields agree with BipedDef and the loader") {
-  const Json segments = LoadSchema().at("properties").at("character").at("properties").at("segments");
-  const std::vector<std::string> names = segments.at("propertyNames").at("enum").get<std::vector<std::string>>();
-  CHECK(names == rise::SegmentNames());
-  const Json& fields = segments.at("additionalProperties").at("properties");
-  CHECK(Keys(fields) == std::set<std::string>{"length_m", "width_m", "depth_m", "mass_kg"});
-  for (auto it = fields.begin(); it != fields.end(); ++it) {
-    INFO(it.key());
-    CheckRange({"character", "segments", "thigh_l", it.key()}, it.value(), {{"character", {{"mass_kg", 200}}}});
+  TEST_CASE("the schema is draft 2020-12 and every key, default and range agrees with the loader") {
+    const Json schema = LoadSchema();
+    CHECK(schema.at("$schema") == "https://json-schema.org/draft/2020-12/schema");
+    Json resolved = Json::parse(rise::RiseSpecToJson(rise::RiseSpec{}).dump());
+    // root_euler_deg is written only for posture custom; take its default from such a spec.
+    rise::RiseSpec custom;
+    custom.start.posture = rise::Posture::kCustom;
+    resolved["start"]["root_euler_deg"] = Json::parse(rise::RiseSpecToJson(custom).dump())["start"]["root_euler_deg"];
+    CompareObject(schema, resolved, {});
+    // The root is closed, like the loader.
+    CHECK(schema.at("additionalProperties") == false);
   }
-}
 
-TEST_CASE("joint angles: the schema lists each posable joint with the BipedDef limits") {
-  const Json joints = LoadSchema().at("properties").at("start").at("properties").at("joints_deg").at("properties");
-  const rise::BipedDef def = rise::MakeBipedDef(1.75f, 70.0f);
-  std::set<std::string> posable;
-  for (int i = 0; i < def.skeleton.JointCount(); ++i) {
-    if (def.DofCount(i) > 0) posable.insert(def.skeleton.joints[i].name);
-  }
-  CHECK(Keys(joints) == posable);
-  for (const std::string& name : posable) {
-    const int joint = def.Find(name);
-    const Json& items = joints.at(name).at("prefixItems");
-    REQUIRE(static_cast<int>(items.size()) == def.DofCount(joint));
-    for (int k = 0; k < def.DofCount(joint); ++k) {
-      INFO(name << " dof " << k);
-      CHECK(items[k].at("description") == def.bones[joint].dofs[k].name);
-      CHECK(items[k].at("minimum").get<double>() == def.bones[joint].dofs[k].minDeg);
-      CHECK(items[k].at("maximum").get<double>() == def.bones[joint].dofs[k].maxDeg);
+  TEST_CASE("segment overrides: names and fields agree with BipedDef and the loader") {
+    const Json segments = LoadSchema().at("properties").at("character").at("properties").at("segments");
+    const std::vector<std::string> names = segments.at("propertyNames").at("enum").get<std::vector<std::string>>();
+    CHECK(names == rise::SegmentNames());
+    const Json& fields = segments.at("additionalProperties").at("properties");
+    CHECK(Keys(fields) == std::set<std::string>{"length_m", "width_m", "depth_m", "mass_kg"});
+    for (auto it = fields.begin(); it != fields.end(); ++it) {
+      INFO(it.key());
+      CheckRange({"character", "segments", "thigh_l", it.key()}, it.value(), {{"character", {{"mass_kg", 200}}}});
     }
-    // The loader accepts an array of the schema's size at the limits and rejects one value more.
-    std::vector<double> at(def.DofCount(joint), 0.0);
-    CHECK(Accepts(Document({"start", "joints_deg", name}, at)));
-    at.push_back(0.0);
-    CHECK_FALSE(Accepts(Document({"start", "joints_deg", name}, at)));
   }
-}
 
-TEST_CASE("disturbances: required keys and ranges agree with the loader") {
-  const Json items = LoadSchema().at("properties").at("disturbances").at("items");
-  const std::vector<std::string> required = items.at("required").get<std::vector<std::string>>();
-  CHECK(std::set<std::string>(required.begin(), required.end()) == Keys(items.at("properties")));
-  const Json push = {{"time_s", 1.0}, {"body", "chest"}, {"force_n", {150, 0, 0}}, {"duration_s", 0.2}};
-  CHECK(Accepts(Json{{"disturbances", {push}}, {"max_duration_s", 120}}));
-  for (const std::string& key : required) {
-    Json missing = push;
-    missing.erase(key);
-    CHECK_FALSE(Accepts(Json{{"disturbances", {missing}}}));
-  }
-  for (const char* key : {"time_s", "duration_s"}) {
-    const Json& node = items.at("properties").at(key);
-    for (const double v : {node.at("minimum").get<double>(), node.at("maximum").get<double>()}) {
-      Json ok = push;
-      ok[key] = v;
-      CHECK(Accepts(Json{{"disturbances", {ok}}, {"max_duration_s", 120}}));
+  TEST_CASE("joint angles: the schema lists each posable joint with the BipedDef limits") {
+    const Json joints = LoadSchema().at("properties").at("start").at("properties").at("joints_deg").at("properties");
+    const rise::BipedDef def = rise::MakeBipedDef(1.75f, 70.0f);
+    std::set<std::string> posable;
+    for (int i = 0; i < def.skeleton.JointCount(); ++i) {
+      if (def.DofCount(i) > 0) posable.insert(def.skeleton.joints[i].name);
     }
-    Json below = push;
-    below[key] = node.at("minimum").get<double>() - 1e-4;
-    CHECK_FALSE(Accepts(Json{{"disturbances", {below}}, {"max_duration_s", 120}}));
+    CHECK(Keys(joints) == posable);
+    for (const std::string& name : posable) {
+      const int joint = def.Find(name);
+      const Json& items = joints.at(name).at("prefixItems");
+      REQUIRE(static_cast<int>(items.size()) == def.DofCount(joint));
+      for (int k = 0; k < def.DofCount(joint); ++k) {
+        INFO(name << " dof " << k);
+        CHECK(items[k].at("description") == def.bones[joint].dofs[k].name);
+        CHECK(items[k].at("minimum").get<double>() == def.bones[joint].dofs[k].minDeg);
+        CHECK(items[k].at("maximum").get<double>() == def.bones[joint].dofs[k].maxDeg);
+      }
+      // The loader accepts an array of the schema's size at the limits and rejects one value more.
+      std::vector<double> at(def.DofCount(joint), 0.0);
+      CHECK(Accepts(Document({"start", "joints_deg", name}, at)));
+      at.push_back(0.0);
+      CHECK_FALSE(Accepts(Document({"start", "joints_deg", name}, at)));
+    }
   }
-  CHECK(items.at("properties").at("body").at("enum").get<std::vector<std::string>>() == rise::SegmentNames());
-}
+
+  TEST_CASE("disturbances: required keys and ranges agree with the loader") {
+    const Json items = LoadSchema().at("properties").at("disturbances").at("items");
+    const std::vector<std::string> required = items.at("required").get<std::vector<std::string>>();
+    CHECK(std::set<std::string>(required.begin(), required.end()) == Keys(items.at("properties")));
+    const Json push = {{"time_s", 1.0}, {"body", "chest"}, {"force_n", {150, 0, 0}}, {"duration_s", 0.2}};
+    CHECK(Accepts(Json{{"disturbances", {push}}, {"max_duration_s", 120}}));
+    for (const std::string& key : required) {
+      Json missing = push;
+      missing.erase(key);
+      CHECK_FALSE(Accepts(Json{{"disturbances", {missing}}}));
+    }
+    for (const char* key : {"time_s", "duration_s"}) {
+      const Json& node = items.at("properties").at(key);
+      for (const double v : {node.at("minimum").get<double>(), node.at("maximum").get<double>()}) {
+        Json ok = push;
+        ok[key] = v;
+        CHECK(Accepts(Json{{"disturbances", {ok}}, {"max_duration_s", 120}}));
+      }
+      Json below = push;
+      below[key] = node.at("minimum").get<double>() - 1e-4;
+      CHECK_FALSE(Accepts(Json{{"disturbances", {below}}, {"max_duration_s", 120}}));
+    }
+    CHECK(items.at("properties").at("body").at("enum").get<std::vector<std::string>>() == rise::SegmentNames());
+  }
 }
