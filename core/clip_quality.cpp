@@ -103,6 +103,12 @@ const char* Verdict(bool ok) {
   return ok ? "PASS" : "FAIL";
 }
 
+// Figures in JSON to a micrometre (or micro-degree, microsecond): enough for
+// every bar, and the index reads without float noise.
+double Rounded(double value) {
+  return std::round(value * 1e6) / 1e6;
+}
+
 }  // namespace
 
 QualityReport MeasureClip(const Clip& clip, const QualityOptions& options) {
@@ -278,30 +284,35 @@ nlohmann::json QualityReport::ToJson() const {
     json["error"] = error;
     return json;
   }
-  json["duration"] = duration;
+  json["duration"] = Rounded(duration);
   json["frames"] = frames;
   json["fps"] = fps;
-  json["standing_head_height"] = standingHeadHeight;
-  json["starts_lying"] = {{"passed", startsLying}, {"head_ratio", startHeadRatio}, {"trunk_deg", startTrunkDeg}};
-  json["ends_standing"] = {{"passed", endsStanding},
-                           {"time_to_stand", timeToStand >= 0.0 ? nlohmann::json(timeToStand) : nlohmann::json()},
-                           {"head_ratio", headHeightRatio},
-                           {"trunk_tilt_deg", trunkTiltEnd},
-                           {"foot_height_l", footHeightEndL},
-                           {"foot_height_r", footHeightEndR}};
-  json["penetration"] = {
-      {"passed", penetrationOk}, {"max", maxPenetration}, {"joint", penetrationJoint}, {"frame", penetrationFrame}};
+  json["standing_head_height"] = Rounded(standingHeadHeight);
+  json["starts_lying"] = {
+      {"passed", startsLying}, {"head_ratio", Rounded(startHeadRatio)}, {"trunk_deg", Rounded(startTrunkDeg)}};
+  json["ends_standing"] = {
+      {"passed", endsStanding},
+      {"time_to_stand", timeToStand >= 0.0 ? nlohmann::json(Rounded(timeToStand)) : nlohmann::json()},
+      {"head_ratio", Rounded(headHeightRatio)},
+      {"trunk_tilt_deg", Rounded(trunkTiltEnd)},
+      {"foot_height_l", Rounded(footHeightEndL)},
+      {"foot_height_r", Rounded(footHeightEndR)}};
+  json["penetration"] = {{"passed", penetrationOk},
+                         {"max", Rounded(maxPenetration)},
+                         {"joint", penetrationJoint},
+                         {"frame", penetrationFrame}};
   nlohmann::json effectors = nlohmann::json::object();
   for (const EffectorSlip& slip : slips) {
-    effectors[slip.effector] = {{"slip", slip.slip}, {"contacts", slip.contacts}};
+    effectors[slip.effector] = {{"slip", Rounded(slip.slip)}, {"contacts", slip.contacts}};
     if (slip.contacts > 0) {
-      effectors[slip.effector]["worst_contact"] = {slip.contactStart, slip.contactEnd};
+      effectors[slip.effector]["worst_contact"] = {Rounded(slip.contactStart), Rounded(slip.contactEnd)};
     }
   }
-  json["slip"] = {{"passed", slipOk}, {"max", maxSlip}, {"effector", maxSlipEffector}, {"effectors", effectors}};
+  json["slip"] = {
+      {"passed", slipOk}, {"max", Rounded(maxSlip)}, {"effector", maxSlipEffector}, {"effectors", effectors}};
   json["joint_jump"] = {{"passed", jumpOk},
-                        {"max_speed", maxJointJump},
-                        {"max_distance", maxJointJumpMeters},
+                        {"max_speed", Rounded(maxJointJump)},
+                        {"max_distance", Rounded(maxJointJumpMeters)},
                         {"joint", jumpJoint},
                         {"frame", jumpFrame}};
   return json;

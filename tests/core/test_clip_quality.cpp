@@ -226,6 +226,8 @@ TEST_SUITE("clip_quality") {
     CHECK(json["joint_jump"]["joint"] == "head_end");
     CHECK(json["slip"]["effectors"]["foot_r"]["contacts"] == 1);
     CHECK(json["penetration"]["max"].get<double>() == doctest::Approx(report.maxPenetration));
+    // Figures are rounded to 1e-6: 50 / 30 s reads as 1.666667.
+    CHECK(json["ends_standing"]["time_to_stand"].get<double>() == 1.666667);
     const std::string summary = report.Summary();
     CHECK(summary.find("PASS ends standing   stands from 1.67 s") != std::string::npos);
     CHECK(summary.find("PASS overall") != std::string::npos);
