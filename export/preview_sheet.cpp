@@ -29,7 +29,7 @@ namespace {
 constexpr int kTitleHeight = 36;         // pixels
 constexpr int kLabelHeight = 50;         // pixels under each frame: two text lines
 constexpr int kTextScale = 2;            // font pixels per glyph pixel
-constexpr int kSupersample = 3;          // rendered pixels per output pixel along each axis
+constexpr int kSupersample = 2;          // rendered pixels per output pixel along each axis
 constexpr float kMarginPixels = 14;      // free space around the motion in a cell
 constexpr float kAzimuthDeg = 55;        // camera round from the character's facing (+Z) towards +X
 constexpr float kElevationDeg = 20;      // camera above the ground plane
@@ -184,15 +184,24 @@ struct Canvas {
   int width, height;
   std::vector<glm::vec3> colour;
   std::vector<float> depth;
-  std::vector<int> id;  // -1 background, 0 ground, box index + 1 for the body
+  std::vector<int> id;         // -1 background, 0 ground, box index + 1 for the body
+  std::vector<uint8_t> marks;  // scratch per pixel: shadowed, outlined
 
+  // One canvas serves every cell: allocating a fresh one per cell cost more
+  // than drawing it.
   Canvas(int w, int h)
-      : width(w),
-        height(h),
-        colour(size_t(w) * h),
-        depth(size_t(w) * h, std::numeric_limits<float>::max()),
-        id(size_t(w) * h, -1) {}
+      : width(w), height(h), colour(size_t(w) * h), depth(size_t(w) * h), id(size_t(w) * h), marks(size_t(w) * h) {}
   size_t Index(int x, int y) const { return size_t(y) * width + x; }
+
+  // Clears to the background: a sky brightening towards the horizon.
+  void Clear() {
+    for (int y = 0; y < height; ++y) {
+      const glm::vec3 sky = glm::mix(kSkyTop, kSkyBottom, float(y) / float(height));
+      std::fill(colour.begin() + Index(0, y), colour.begin() + Index(0, y) + width, sky);
+    }
+    std::fill(depth.begin(), depth.end(), std::numeric_limits<float>::max());
+    std::fill(id.begin(), id.end(), -1);
+  }
 };
 
 float Edge(const glm::vec3& a, const glm::vec3& b, float x, float y) {
@@ -235,21 +244,27 @@ void DrawGround(Canvas& canvas, const Camera& camera, const GroundPlane& ground,
     const float t = -ground.Height(onScreen) / facing;
     return std::make_pair(ground.Coordinates(onScreen + t * f), glm::dot(onScreen, f) + t);
   };
-  const glm::vec2 p00 = planeAt(0, 0).first, p10 = planeAt(1, 0).first, p01 = planeAt(0, 1).first;
-  const float xPerPixel = glm::length(glm::vec2(p10.x - p00.x, p01.x - p00.x));
-  const float zPerPixel = glm::length(glm::vec2(p10.y - p00.y, p01.y - p00.y));
-  auto lineCover = [](float coordinate, float perPixel, float spacing) {
-    const float distance = std::fabs(coordinate - spacing * std::round(coordinate / spacing)) / perPixel;
-    return std::clamp(1.6f - distance, 0.0f, 1.0f);
+  const auto [c00, d00] = planeAt(0.5f, 0.5f);
+  const auto [c10, d10] = planeAt(1.5f, 0.5f);
+  const auto [c01, d01] = planeAt(0.5f, 1.5f);
+  const glm::vec2 stepX = c10 - c00, stepY = c01 - c00;
+  const float depthX = d10 - d00, depthY = d01 - d00;
+  const float xPerPixel = glm::length(glm::vec2(stepX.x, stepY.x));
+  const float zPerPixel = glm::length(glm::vec2(stepX.y, stepY.y));
+  // Anti-aliased line coverage from a pixel's distance to the line.
+  auto cover = [](float distance, float perPixel) { return std::clamp(1.6f - distance / perPixel, 0.0f, 1.0f); };
+  auto gridDistance = [](float coordinate) {
+    return std::fabs(coordinate - kGridSpacing * std::round(coordinate / kGridSpacing));
   };
   for (int y = 0; y < canvas.height; ++y) {
     for (int x = 0; x < canvas.width; ++x) {
-      const auto [p, depth] = planeAt(x + 0.5f, y + 0.5f);
+      const glm::vec2 p = c00 + float(x) * stepX + float(y) * stepY;
       if (p.x < patch.min.x || p.x > patch.max.x || p.y < patch.min.y || p.y > patch.max.y) continue;
+      const float depth = d00 + float(x) * depthX + float(y) * depthY;
       const size_t i = canvas.Index(x, y);
-      const float grid = std::max(lineCover(p.x, xPerPixel, kGridSpacing), lineCover(p.y, zPerPixel, kGridSpacing));
+      const float grid = std::max(cover(gridDistance(p.x), xPerPixel), cover(gridDistance(p.y), zPerPixel));
       // The lines through the origin drawn darker show how far the body travels.
-      const float axis = std::max(lineCover(p.x, xPerPixel, 1e6f), lineCover(p.y, zPerPixel, 1e6f));
+      const float axis = std::max(cover(std::fabs(p.x), xPerPixel), cover(std::fabs(p.y), zPerPixel));
       glm::vec3 colour = glm::mix(kGround, kGridLine, grid);
       colour = glm::mix(colour, kAxisLine, axis);
       canvas.colour[i] = colour;
@@ -260,7 +275,8 @@ void DrawGround(Canvas& canvas, const Camera& camera, const GroundPlane& ground,
 }
 
 void DrawShadows(Canvas& canvas, const Camera& camera, const GroundPlane& ground, const PosedBoxes& posed) {
-  std::vector<bool> shadow(canvas.id.size(), false);
+  std::vector<uint8_t>& shadow = canvas.marks;
+  std::fill(shadow.begin(), shadow.end(), 0);
   for (const auto& corners : posed.corners) {
     // The box's vertical projection is the hull of its flattened corners, which
     // the fan of flattened triangles from corner 0 covers.
@@ -268,7 +284,7 @@ void DrawShadows(Canvas& canvas, const Camera& camera, const GroundPlane& ground
     for (int c = 0; c < 8; ++c) flat[c] = camera.Project(ground.Below(corners[c]));
     for (int b = 1; b < 8; ++b) {
       for (int c = b + 1; c < 8; ++c) {
-        Rasterise(canvas, flat[0], flat[b], flat[c], [&](size_t i, float) { shadow[i] = true; });
+        Rasterise(canvas, flat[0], flat[b], flat[c], [&](size_t i, float) { shadow[i] = 1; });
       }
     }
   }
@@ -304,7 +320,8 @@ void DrawBody(Canvas& canvas, const Camera& camera, const PosedBoxes& posed, con
   }
   // Darken body pixels next to another box or the background, so limbs read
   // against the trunk they cross.
-  std::vector<glm::vec3> outlined = canvas.colour;
+  std::vector<uint8_t>& outlined = canvas.marks;
+  std::fill(outlined.begin(), outlined.end(), 0);
   for (int y = 0; y < canvas.height; ++y) {
     for (int x = 0; x < canvas.width; ++x) {
       const size_t i = canvas.Index(x, y);
@@ -319,10 +336,12 @@ void DrawBody(Canvas& canvas, const Camera& camera, const PosedBoxes& posed, con
           edge = canvas.id[n] != canvas.id[i] && canvas.depth[n] > canvas.depth[i] - 0.02f;
         }
       }
-      if (edge) outlined[i] = canvas.colour[i] * kOutlineFactor;
+      outlined[i] = edge ? 1 : 0;
     }
   }
-  canvas.colour.swap(outlined);
+  for (size_t i = 0; i < outlined.size(); ++i) {
+    if (outlined[i]) canvas.colour[i] *= kOutlineFactor;
+  }
 }
 
 void DrawText(Image& image, int x, int y, const std::string& text, const glm::vec3& colour, int scale) {
@@ -476,13 +495,10 @@ std::string WritePreviewSheet(const Clip& clip, const PreviewOptions& options, c
     legendX -= 16;
   }
 
+  Canvas canvas(drawWidth, drawHeight);
   for (int k = 0; k < keys; ++k) {
     const int cellX = (k % columns) * options.cellWidth, cellY = kTitleHeight + (k / columns) * options.cellHeight;
-    Canvas canvas(drawWidth, drawHeight);
-    for (int y = 0; y < drawHeight; ++y) {
-      const glm::vec3 sky = glm::mix(kSkyTop, kSkyBottom, float(y) / float(drawHeight));
-      for (int x = 0; x < drawWidth; ++x) canvas.colour[canvas.Index(x, y)] = sky;
-    }
+    canvas.Clear();
     DrawGround(canvas, camera, ground, patch);
     DrawShadows(canvas, camera, ground, keyPoses[k]);
     DrawBody(canvas, camera, keyPoses[k], colours);
