@@ -222,6 +222,8 @@ std::string ReadGltf(const std::string& path, Clip& clip) {
   while (!stack.empty()) {
     const auto [node, parent] = stack.back();
     stack.pop_back();
+    // A node listed twice (a malformed file with a cycle) is visited once.
+    if (jointOfNode.count(node)) return fail("its node hierarchy has a cycle or a node with two parents");
     jointOfNode[node] = static_cast<int>(nodeOfJoint.size());
     nodeOfJoint.push_back(node);
     parentJoint.push_back(parent);
@@ -234,7 +236,11 @@ std::string ReadGltf(const std::string& path, Clip& clip) {
 
   // The static transform above the root joint (armature node etc.).
   glm::mat4 above(1.0f);
-  for (int n = parentOf[roots[0]]; n >= 0; n = parentOf[n]) above = RestTrs(model.nodes[n]).Matrix() * above;
+  size_t depth = 0;
+  for (int n = parentOf[roots[0]]; n >= 0; n = parentOf[n]) {
+    if (++depth > model.nodes.size()) return fail("its node hierarchy has a cycle");
+    above = RestTrs(model.nodes[n]).Matrix() * above;
+  }
 
   // World matrices of every joint for local TRS `pose`.
   std::vector<glm::mat4> world(count);

@@ -72,5 +72,12 @@ TEST_CASE("a file without a skin, a missing file and a skin with two roots are r
   const std::string twoRoots = without(kForeignGltf, R"(, "children": [2]})", "}");
   std::ofstream(folder.File("tworoots.gltf")) << twoRoots;
   CHECK(rise::ReadGltf(folder.File("tworoots.gltf"), clip).find("2 root joints") != std::string::npos);
+  // Spine made a parent of the Armature: Armature -> Hips -> Spine -> Armature.
+  const std::string cycle = without(kForeignGltf, R"("translation": [0, 50, 0]})", R"("translation": [0, 50, 0], "children": [0]})");
+  std::ofstream(folder.File("cycle.gltf")) << cycle;
+  CHECK(rise::ReadGltf(folder.File("cycle.gltf"), clip).find("cycle") != std::string::npos);
+  // A .glb cut short.
+  std::ofstream(folder.File("short.glb"), std::ios::binary) << std::string("glTF\x02\0\0\0\x40\0\0\0", 12);
+  CHECK(rise::ReadGltf(folder.File("short.glb"), clip) != "");
 }
 }
