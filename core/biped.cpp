@@ -23,31 +23,6 @@ float Radians(double degrees) {
   return static_cast<float>(degrees) * kPi / 180.0f;
 }
 
-// Joint frame F of a bone (see biped.h): x = hinge or twist axis, y and z the swing axes.
-glm::quat EngineFrame(const BoneDef& bone) {
-  glm::vec3 x, y;
-  switch (bone.kind) {
-    case JointKind::kHinge: {
-      x = bone.dofs[0].axis;
-      // Any y perpendicular to the hinge axis serves; pick the one farthest from x.
-      y = std::fabs(x.y) < 0.9f ? kAxisY : kAxisZ;
-      y = glm::normalize(y - glm::dot(y, x) * x);
-      break;
-    }
-    case JointKind::kUniversal:
-      y = bone.dofs[0].axis;
-      x = glm::cross(y, bone.dofs[1].axis);
-      break;
-    case JointKind::kBall:
-      x = bone.dofs[2].axis;  // the twist DOF
-      y = bone.dofs[0].axis;
-      break;
-    default:
-      return glm::quat(1, 0, 0, 0);
-  }
-  return glm::normalize(glm::quat_cast(glm::mat3(x, y, glm::cross(x, y))));
-}
-
 physics::AngleRange RangeOf(const JointDof& dof) {
   return {Radians(dof.minDeg), Radians(dof.maxDeg)};
 }
@@ -236,7 +211,7 @@ Biped::Biped(const BipedDef& def, physics::World& world, const BipedPose& pose, 
     const BoneDef& bone = def_.bones[j];
     if (bone.kind == JointKind::kEnd) continue;
     RISE_ASSERT(bone.kind != JointKind::kFree);
-    frames_[j] = EngineFrame(bone);
+    frames_[j] = def_.JointFrame(j);
     physics::JointDef joint;
     joint.type = EngineType(bone.kind);
     joint.bodyA = bodies_[def_.skeleton.joints[j].parent];

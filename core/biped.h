@@ -9,10 +9,10 @@
 // joint frame, so the world pose of every body follows by forward kinematics.
 //
 // Engine joints (physics/joint.h) measure qRel in a joint frame F fixed in both bodies at the
-// bind pose; F's x axis is the hinge axis or, for ball and universal joints, the twist axis, and
-// for a universal joint F's y and z are the BoneDef's first and second DOF axes. A skeleton local
-// rotation q and the engine's qRel relate by qRel = conj(F) q F, so motor targets are set in
-// skeleton terms with SetLocalTarget.
+// bind pose; F is BipedDef::JointFrame, whose axes carry the joint's DOFs the way the engine's
+// joint types expect (x: hinge or twist axis; y then z: the universal joint's two angles). A
+// skeleton local rotation q and the engine's qRel relate by qRel = conj(F) q F, so motor targets
+// are set in skeleton terms with SetLocalTarget.
 //
 // Limits: hinge and universal limits are the BoneDef's DOF limits exactly. A ball joint (spine,
 // neck) has the BoneDef's twist limit and one swing cone whose half-angle is the largest of its

@@ -3,6 +3,10 @@
 #include "core/biped_def.h"
 
 #include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/gtx/euler_angles.hpp>
+#include <glm/mat3x3.hpp>
 
 #include "base/assert.h"
 
@@ -91,6 +95,56 @@ glm::quat BipedDef::JointRotation(int joint, const float* anglesDeg) const {
   const std::vector<JointDof>& dofs = bones[joint].dofs;
   for (size_t i = 0; i < dofs.size(); ++i) q = q * glm::angleAxis(glm::radians(anglesDeg[i]), dofs[i].axis);
   return q;
+}
+
+glm::quat BipedDef::JointFrame(int joint) const {
+  const BoneDef& bone = bones[joint];
+  glm::vec3 x, y;
+  switch (bone.kind) {
+    case JointKind::kHinge:
+      x = bone.dofs[0].axis;
+      // Any y perpendicular to the hinge axis serves; take world Y (or Z for a vertical hinge).
+      y = std::fabs(x.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
+      y = glm::normalize(y - glm::dot(y, x) * x);
+      break;
+    case JointKind::kUniversal:
+      y = bone.dofs[0].axis;
+      x = glm::cross(y, bone.dofs[1].axis);
+      break;
+    case JointKind::kBall:
+      x = bone.dofs[2].axis;
+      y = bone.dofs[0].axis;
+      RISE_ASSERT(std::fabs(std::fabs(glm::dot(glm::cross(x, y), bone.dofs[1].axis)) - 1.0f) < 1e-5f);
+      break;
+    default:
+      return glm::quat(1, 0, 0, 0);
+  }
+  return glm::normalize(glm::quat_cast(glm::mat3(x, y, glm::cross(x, y))));
+}
+
+void BipedDef::JointAngles(int joint, const glm::quat& local, float* anglesDeg) const {
+  const glm::quat frame = JointFrame(joint);
+  float ay = 0.0f, az = 0.0f, ax = 0.0f;
+  glm::extractEulerAngleYZX(glm::mat4_cast(glm::conjugate(frame) * local * frame), ay, az, ax);
+  // F's z axis is the second DOF axis or its opposite (a ball joint's frame is right-handed
+  // whichever way its DOF axes point).
+  const float zSign =
+      bones[joint].dofs.size() >= 2 ? glm::dot(frame * glm::vec3(0, 0, 1), bones[joint].dofs[1].axis) : 1.0f;
+  const float yzx[3] = {glm::degrees(ay), zSign * glm::degrees(az), glm::degrees(ax)};
+  switch (bones[joint].kind) {
+    case JointKind::kHinge:
+      anglesDeg[0] = yzx[2];
+      break;
+    case JointKind::kUniversal:
+      anglesDeg[0] = yzx[0];
+      anglesDeg[1] = yzx[1];
+      break;
+    case JointKind::kBall:
+      for (int i = 0; i < 3; ++i) anglesDeg[i] = yzx[i];
+      break;
+    default:
+      break;
+  }
 }
 
 glm::vec3 BipedDef::BindCenterOfMass() const {

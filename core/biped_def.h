@@ -110,6 +110,15 @@ struct BipedDef {
   int DofCount(int joint) const { return static_cast<int>(bones[joint].dofs.size()); }
   // Local rotation of a joint from its DOF angles in degrees (count = DofCount).
   glm::quat JointRotation(int joint, const float* anglesDeg) const;
+  // The inverse: DOF angles in degrees of a local rotation (DofCount values written). Exact for
+  // rotations the joint can make; for others (e.g. a twisted universal joint) the angles of the
+  // rotation's Euler decomposition along the joint's axes, dropping the part it cannot make.
+  void JointAngles(int joint, const glm::quat& local, float* anglesDeg) const;
+  // Frame F of a joint whose axes carry its DOFs: hinge [x]; universal [y, z]; ball [y, +-z, x]
+  // (x is the hinge or twist axis; a ball joint's z is its second DOF axis or the opposite, as
+  // the right-handed frame falls). A rotation in F's coordinates, conj(F) q F, is
+  // Ry(a0) Rz(+-a1) Rx(a2) with the angles that are present; the engine's joint frame is this F.
+  glm::quat JointFrame(int joint) const;
   // Whole-body centre of mass in the bind pose.
   glm::vec3 BindCenterOfMass() const;
   // Bind-pose height of the top of the head above the soles.

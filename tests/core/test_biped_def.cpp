@@ -211,4 +211,44 @@ TEST_SUITE("biped_def") {
     BindBox(def, def.Find("chest"), chestLo, chestHi);
     CHECK(armLo.x > chestHi.x);
   }
+  TEST_CASE("JointAngles inverts JointRotation for every joint at random angles inside the limits") {
+    const rise::BipedDef def = rise::MakeBipedDef(1.75f, 70.0f);
+    int checked = 0;
+    for (int j = 0; j < def.skeleton.JointCount(); ++j) {
+      const int n = def.DofCount(j);
+      if (n == 0) continue;
+      for (int trial = 0; trial < 50; ++trial) {
+        float angles[3] = {}, back[3] = {};
+        for (int k = 0; k < n; ++k) {
+          const rise::JointDof& dof = def.bones[j].dofs[k];
+          angles[k] = std::uniform_real_distribution<float>(dof.minDeg, dof.maxDeg)(rise::test::Rng());
+        }
+        def.JointAngles(j, def.JointRotation(j, angles), back);
+        for (int k = 0; k < n; ++k) {
+          INFO(def.skeleton.joints[j].name << " dof " << k << ": " << angles[k] << " -> " << back[k]);
+          CHECK(std::fabs(back[k] - angles[k]) < 0.01f);
+        }
+        ++checked;
+      }
+    }
+    CHECK(checked == 15 * 50);
+  }
+
+  TEST_CASE("a joint frame puts the DOF axes where the engine's joint types expect them") {
+    const rise::BipedDef def = rise::MakeBipedDef(1.75f, 70.0f);
+    for (int j = 0; j < def.skeleton.JointCount(); ++j) {
+      const std::vector<rise::JointDof>& dofs = def.bones[j].dofs;
+      const glm::quat f = def.JointFrame(j);
+      INFO(def.skeleton.joints[j].name);
+      if (dofs.size() == 1) CHECK_VEC3_NEAR(f * glm::vec3(1, 0, 0), dofs[0].axis, 1e-5f);
+      if (dofs.size() >= 2) {
+        CHECK_VEC3_NEAR(f * glm::vec3(0, 1, 0), dofs[0].axis, 1e-5f);
+        // Universal joints need z = the second axis exactly (the engine's second angle is about B's z).
+        const float along = glm::dot(f * glm::vec3(0, 0, 1), dofs[1].axis);
+        CHECK(std::fabs(along - 1.0f) < 1e-5f + (dofs.size() == 3 ? 2.0f : 0.0f));
+        CHECK(std::fabs(std::fabs(along) - 1.0f) < 1e-5f);
+      }
+      if (dofs.size() == 3) CHECK_VEC3_NEAR(f * glm::vec3(1, 0, 0), dofs[2].axis, 1e-5f);
+    }
+  }
 }
