@@ -4,16 +4,16 @@
 // resampled from 240 Hz as a simulation's output would be.
 // Prints CSV: what,frames,joints,bytes,median_ms,min_ms,max_ms (bytes: the
 // main file written; 0 for the in-memory resampling row).
-#include "export/biped_fixture.h"
-#include "export/bvh_writer.h"
-#include "export/gltf_writer.h"
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <vector>
+
+#include "export/biped_fixture.h"
+#include "export/bvh_writer.h"
+#include "export/gltf_writer.h"
 
 namespace {
 
@@ -34,7 +34,8 @@ void Measure(const char* what, const rise::Clip& clip, const std::string& path,
   }
   std::sort(ms.begin(), ms.end());
   std::printf("%s,%d,%d,%ju,%.3f,%.3f,%.3f\n", what, clip.FrameCount(), clip.skeleton.JointCount(),
-              static_cast<uintmax_t>(path.empty() ? 0 : std::filesystem::file_size(path)), ms[ms.size() / 2], ms.front(), ms.back());
+              static_cast<uintmax_t>(path.empty() ? 0 : std::filesystem::file_size(path)), ms[ms.size() / 2],
+              ms.front(), ms.back());
 }
 
 }  // namespace
@@ -53,7 +54,8 @@ int main() {
   Measure("glb+sidecar", clip, glb, [&] { return rise::WriteGltf(clip, glb); });
   Measure("gltf+bin", clip, gltf, [&] { return rise::WriteGltf(clip, gltf, {rise::NamingPreset::kDefault, false}); });
   Measure("bvh", clip, bvh, [&] { return rise::WriteBvh(clip, bvh, {{}, rise::NamingPreset::kDefault, false}); });
-  Measure("resample_240hz_to_60fps", clip, "", [&] { return rise::ResampleClip(skeleton, samples, 60.0, {}).Validate(); });
+  Measure("resample_240hz_to_60fps", clip, "",
+          [&] { return rise::ResampleClip(skeleton, samples, 60.0, {}).Validate(); });
   std::filesystem::remove_all(folder);
   return 0;
 }

@@ -2,15 +2,15 @@
 // All-or-nothing file output through a temporary file and a rename.
 #include "export/atomic_file.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <vector>
-
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace rise {
 namespace {

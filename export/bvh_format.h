@@ -9,7 +9,6 @@
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
-
 #include <optional>
 #include <string_view>
 

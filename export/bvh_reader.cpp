@@ -2,11 +2,10 @@
 // A small BVH reader returning world joint positions per frame.
 #include "export/bvh_reader.h"
 
-#include <glm/gtc/quaternion.hpp>
-
 #include <cctype>
 #include <cstdlib>
 #include <fstream>
+#include <glm/gtc/quaternion.hpp>
 #include <sstream>
 
 namespace rise {
@@ -110,7 +109,8 @@ std::string ParseBvh(const std::string& text, const BvhFormat& format, const std
       if (!tokens.Number(count) || count < 0 || count > 6) return fail("CHANNELS needs a count from 0 to 6");
       for (int c = 0; c < static_cast<int>(count); ++c) {
         Channel channel;
-        if (!ParseChannel(tokens.Next(), channel)) return fail("unknown channel in joint '" + out.names[open.back()] + "'");
+        if (!ParseChannel(tokens.Next(), channel))
+          return fail("unknown channel in joint '" + out.names[open.back()] + "'");
         nodes[open.back()].channels.push_back(channel);
       }
     } else {
@@ -141,12 +141,24 @@ std::string ParseBvh(const std::string& text, const BvhFormat& format, const std
         if (!tokens.Number(value)) return fail("MOTION holds fewer values than Frames x channels");
         const float v = static_cast<float>(value);
         switch (channel) {
-          case Channel::kXPos: local.x = v; break;
-          case Channel::kYPos: local.y = v; break;
-          case Channel::kZPos: local.z = v; break;
-          case Channel::kXRot: turn = turn * glm::angleAxis(glm::radians(v), glm::vec3(1, 0, 0)); break;
-          case Channel::kYRot: turn = turn * glm::angleAxis(glm::radians(v), glm::vec3(0, 1, 0)); break;
-          case Channel::kZRot: turn = turn * glm::angleAxis(glm::radians(v), glm::vec3(0, 0, 1)); break;
+          case Channel::kXPos:
+            local.x = v;
+            break;
+          case Channel::kYPos:
+            local.y = v;
+            break;
+          case Channel::kZPos:
+            local.z = v;
+            break;
+          case Channel::kXRot:
+            turn = turn * glm::angleAxis(glm::radians(v), glm::vec3(1, 0, 0));
+            break;
+          case Channel::kYRot:
+            turn = turn * glm::angleAxis(glm::radians(v), glm::vec3(0, 1, 0));
+            break;
+          case Channel::kZRot:
+            turn = turn * glm::angleAxis(glm::radians(v), glm::vec3(0, 0, 1));
+            break;
         }
       }
       const int parent = nodes[j].parent;

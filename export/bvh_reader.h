@@ -9,12 +9,11 @@
 // are not stored in BVH files, so the caller says which to assume.
 #pragma once
 
-#include "export/bvh_format.h"
-
 #include <glm/vec3.hpp>
-
 #include <string>
 #include <vector>
+
+#include "export/bvh_format.h"
 
 namespace rise {
 

@@ -2,17 +2,16 @@
 // BVH output (hierarchy + ZXY Euler motion).
 #include "export/bvh_writer.h"
 
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <glm/gtc/matrix_access.hpp>
+#include <glm/mat3x3.hpp>
+
 #include "base/assert.h"
 #include "export/atomic_file.h"
 #include "export/clip_metadata_json.h"
 #include "export/rotation_track.h"
-
-#include <glm/gtc/matrix_access.hpp>
-#include <glm/mat3x3.hpp>
-
-#include <algorithm>
-#include <charconv>
-#include <cmath>
 
 namespace rise {
 namespace {
@@ -23,7 +22,7 @@ struct Layout {
   std::vector<std::vector<int>> children;
   std::vector<int> endSiteOf;  // joint -> the leaf joint written as its End Site, or -1
   std::vector<bool> isEndSite;
-  std::vector<int> order;      // written joints in HIERARCHY (depth-first) order
+  std::vector<int> order;  // written joints in HIERARCHY (depth-first) order
 };
 
 Layout MakeLayout(const Clip& clip) {
@@ -83,8 +82,9 @@ void WriteJoint(const Clip& clip, const Layout& layout, const BvhOptions& option
   out += indent + (j == 0 ? "ROOT " : "JOINT ") + PresetJointName(options.naming, joint.name) + "\n";
   out += indent + "{\n" + indent + "  OFFSET ";
   AppendVec(out, offset);
-  out += HasPositionChannels(clip, j) ? "\n" + indent + "  CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n"
-                                      : "\n" + indent + "  CHANNELS 3 Zrotation Xrotation Yrotation\n";
+  out += HasPositionChannels(clip, j)
+             ? "\n" + indent + "  CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n"
+             : "\n" + indent + "  CHANNELS 3 Zrotation Xrotation Yrotation\n";
   bool wroteChild = false;
   for (int child : layout.children[j]) {
     if (layout.isEndSite[child]) continue;

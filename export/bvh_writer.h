@@ -15,11 +15,11 @@
 // - Units and up axis per BvhFormat (metres / Y-up by default).
 #pragma once
 
+#include <string>
+
 #include "export/bvh_format.h"
 #include "export/clip.h"
 #include "export/joint_names.h"
-
-#include <string>
 
 namespace rise {
 

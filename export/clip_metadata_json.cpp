@@ -2,11 +2,10 @@
 // The clip's metadata as JSON (sidecar file and glTF extras).
 #include "export/clip_metadata_json.h"
 
-#include "export/atomic_file.h"
-
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include <filesystem>
+#include "export/atomic_file.h"
 
 namespace rise {
 
@@ -31,7 +30,8 @@ std::string MetadataToJson(const Clip& clip) {
     doc["contacts"].push_back({{"effector", c.effector}, {"start", c.start}, {"end", c.end}, {"footLock", c.locked}});
   }
   doc["peakTorques"] = nlohmann::json::array();
-  for (const auto& [joint, torque] : m.peakTorques) doc["peakTorques"].push_back({{"joint", joint}, {"torque", torque}});
+  for (const auto& [joint, torque] : m.peakTorques)
+    doc["peakTorques"].push_back({{"joint", joint}, {"torque", torque}});
   // Parameters are stored as a JSON value, not a string inside JSON, so tools
   // can read them directly; text that does not parse is kept as a string.
   nlohmann::json parameters = nlohmann::json::parse(m.parametersJson, nullptr, false);

@@ -12,9 +12,9 @@
 //     "parameters": { ...the resolved input... } }
 #pragma once
 
-#include "export/clip.h"
-
 #include <string>
+
+#include "export/clip.h"
 
 namespace rise {
 

@@ -2,16 +2,15 @@
 // From the simulator's samples to a Clip at the requested frame rate.
 #include "export/clip_resample.h"
 
-#include "base/assert.h"
-#include "export/rotation_track.h"
-
 #include <algorithm>
 #include <cmath>
 
+#include "base/assert.h"
+#include "export/rotation_track.h"
+
 namespace rise {
 
-Clip ResampleClip(const Skeleton& skeleton, const MotionSamples& samples, double fps,
-                  const ClipMetadata& metadata) {
+Clip ResampleClip(const Skeleton& skeleton, const MotionSamples& samples, double fps, const ClipMetadata& metadata) {
   const size_t sampleCount = samples.times.size();
   RISE_ASSERT_MSG(fps > 0.0 && std::isfinite(fps), "fps must be positive");
   RISE_ASSERT_MSG(sampleCount >= 1, "no samples to resample");

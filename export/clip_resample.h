@@ -14,12 +14,11 @@
 // Translation is interpolated linearly, rotations by shortest-path slerp.
 #pragma once
 
-#include "export/clip.h"
-
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
-
 #include <vector>
+
+#include "export/clip.h"
 
 namespace rise {
 
@@ -32,7 +31,6 @@ struct MotionSamples {
 
 // Builds the clip at `fps` (> 0). `metadata` times are seconds since the first
 // sample. The result's rotation tracks are unit and sign-continuous.
-Clip ResampleClip(const Skeleton& skeleton, const MotionSamples& samples, double fps,
-                  const ClipMetadata& metadata);
+Clip ResampleClip(const Skeleton& skeleton, const MotionSamples& samples, double fps, const ClipMetadata& metadata);
 
 }  // namespace rise

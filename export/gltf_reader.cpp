@@ -2,13 +2,6 @@
 // glTF 2.0 input through tinygltf (private to this library).
 #include "export/gltf_reader.h"
 
-#include "export/clip_metadata_json.h"
-#include "export/joint_names.h"
-#include "export/rotation_track.h"
-
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
-#include <glm/mat4x4.hpp>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -16,8 +9,15 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
 #include <map>
 #include <set>
+
+#include "export/clip_metadata_json.h"
+#include "export/joint_names.h"
+#include "export/rotation_track.h"
 
 namespace rise {
 namespace {
@@ -51,13 +51,20 @@ class AccessorView {
   float Get(size_t index, int component) const {
     const unsigned char* p = data_ + index * stride_ + component * componentSize_;
     switch (componentType_) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT: return Load<float>(p, 1.0f);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return Load<uint8_t>(p, normalized_ ? 255.0f : 1.0f);
-      case TINYGLTF_COMPONENT_TYPE_BYTE: return std::max(Load<int8_t>(p, normalized_ ? 127.0f : 1.0f), -1.0f);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return Load<uint16_t>(p, normalized_ ? 65535.0f : 1.0f);
-      case TINYGLTF_COMPONENT_TYPE_SHORT: return std::max(Load<int16_t>(p, normalized_ ? 32767.0f : 1.0f), -1.0f);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return Load<uint32_t>(p, 1.0f);
-      default: return 0.0f;
+      case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return Load<float>(p, 1.0f);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return Load<uint8_t>(p, normalized_ ? 255.0f : 1.0f);
+      case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return std::max(Load<int8_t>(p, normalized_ ? 127.0f : 1.0f), -1.0f);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return Load<uint16_t>(p, normalized_ ? 65535.0f : 1.0f);
+      case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return std::max(Load<int16_t>(p, normalized_ ? 32767.0f : 1.0f), -1.0f);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return Load<uint32_t>(p, 1.0f);
+      default:
+        return 0.0f;
     }
   }
 
@@ -83,7 +90,9 @@ struct Trs {
   glm::quat r{1.0f, 0.0f, 0.0f, 0.0f};
   glm::vec3 s{1.0f};
 
-  glm::mat4 Matrix() const { return glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s); }
+  glm::mat4 Matrix() const {
+    return glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(r) * glm::scale(glm::mat4(1.0f), s);
+  }
 };
 
 Trs RestTrs(const tinygltf::Node& node) {
@@ -107,8 +116,8 @@ Trs RestTrs(const tinygltf::Node& node) {
 }
 
 glm::quat RotationOf(const glm::mat4& m) {
-  return glm::normalize(glm::quat_cast(glm::mat3(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])),
-                                                 glm::normalize(glm::vec3(m[2])))));
+  return glm::normalize(glm::quat_cast(
+      glm::mat3(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])), glm::normalize(glm::vec3(m[2])))));
 }
 
 // One animated property of one joint.
@@ -141,10 +150,14 @@ std::string ReadTracks(const tinygltf::Model& model, const tinygltf::Animation& 
     if (joint == jointOfNode.end()) continue;
     Track track;
     track.joint = joint->second;
-    if (channel.target_path == "translation") track.path = Track::kTranslation;
-    else if (channel.target_path == "rotation") track.path = Track::kRotation;
-    else if (channel.target_path == "scale") track.path = Track::kScale;
-    else continue;
+    if (channel.target_path == "translation")
+      track.path = Track::kTranslation;
+    else if (channel.target_path == "rotation")
+      track.path = Track::kRotation;
+    else if (channel.target_path == "scale")
+      track.path = Track::kScale;
+    else
+      continue;
     if (channel.sampler < 0 || channel.sampler >= static_cast<int>(animation.samplers.size())) {
       return "an animation channel names a missing sampler";
     }
@@ -153,7 +166,8 @@ std::string ReadTracks(const tinygltf::Model& model, const tinygltf::Animation& 
     if (!input.Valid() || !output.Valid() || input.Count() == 0) return "an animation sampler has unreadable data";
     const bool cubic = sampler.interpolation == "CUBICSPLINE";
     track.step = sampler.interpolation == "STEP";
-    if (output.Count() != input.Count() * (cubic ? 3 : 1)) return "an animation sampler's output does not match its input";
+    if (output.Count() != input.Count() * (cubic ? 3 : 1))
+      return "an animation sampler's output does not match its input";
     for (size_t k = 0; k < input.Count(); ++k) {
       track.times.push_back(input.Get(k, 0));
       // A cubic spline stores (in-tangent, value, out-tangent) per key.
@@ -260,7 +274,8 @@ std::string ReadGltf(const std::string& path, Clip& clip) {
   std::set<std::string> distinct;
   for (int j = 0; j < count; ++j) {
     SkeletonJoint& joint = out.skeleton.joints[j];
-    joint.name = model.nodes[nodeOfJoint[j]].name.empty() ? "joint_" + std::to_string(j) : model.nodes[nodeOfJoint[j]].name;
+    joint.name =
+        model.nodes[nodeOfJoint[j]].name.empty() ? "joint_" + std::to_string(j) : model.nodes[nodeOfJoint[j]].name;
     joint.parent = parentJoint[j];
     const glm::vec3 position(restWorld[j][3]);
     joint.restOffset = joint.parent < 0 ? position : position - glm::vec3(restWorld[joint.parent][3]);
@@ -285,7 +300,8 @@ std::string ReadGltf(const std::string& path, Clip& clip) {
         const auto it = primitive.attributes.find(name);
         return AccessorView(model, it == primitive.attributes.end() ? -1 : it->second);
       };
-      const AccessorView positions = attribute("POSITION"), joints = attribute("JOINTS_0"), weights = attribute("WEIGHTS_0");
+      const AccessorView positions = attribute("POSITION"), joints = attribute("JOINTS_0"),
+                         weights = attribute("WEIGHTS_0");
       if (!positions.Valid() || !joints.Valid() || !weights.Valid()) continue;
       for (size_t v = 0; v < positions.Count() && v < joints.Count() && v < weights.Count(); ++v) {
         int best = 0;
@@ -347,7 +363,8 @@ std::string ReadGltf(const std::string& path, Clip& clip) {
     for (const Track& track : tracks) {
       const glm::vec4 value = track.Sample(t);
       if (track.path == Track::kTranslation) pose[track.joint].t = glm::vec3(value);
-      if (track.path == Track::kRotation) pose[track.joint].r = glm::normalize(glm::quat(value.w, value.x, value.y, value.z));
+      if (track.path == Track::kRotation)
+        pose[track.joint].r = glm::normalize(glm::quat(value.w, value.x, value.y, value.z));
       if (track.path == Track::kScale) pose[track.joint].s = glm::vec3(value);
     }
     forward(pose);

@@ -22,9 +22,9 @@
 // - metadata from the animation's `extras` when rise-gen wrote them.
 #pragma once
 
-#include "export/clip.h"
-
 #include <string>
+
+#include "export/clip.h"
 
 namespace rise {
 

@@ -2,12 +2,6 @@
 // glTF 2.0 output through tinygltf (private to this library).
 #include "export/gltf_writer.h"
 
-#include "base/assert.h"
-#include "export/atomic_file.h"
-#include "export/clip_metadata_json.h"
-#include "export/rotation_track.h"
-
-#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -15,7 +9,13 @@
 #include <climits>
 #include <cstring>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <sstream>
+
+#include "base/assert.h"
+#include "export/atomic_file.h"
+#include "export/clip_metadata_json.h"
+#include "export/rotation_track.h"
 
 namespace rise {
 namespace {
@@ -74,8 +74,10 @@ tinygltf::Value ToValue(const nlohmann::json& j) {
       for (const auto& value : j) array.push_back(ToValue(value));
       return tinygltf::Value(std::move(array));
     }
-    case nlohmann::json::value_t::string: return tinygltf::Value(j.get<std::string>());
-    case nlohmann::json::value_t::boolean: return tinygltf::Value(j.get<bool>());
+    case nlohmann::json::value_t::string:
+      return tinygltf::Value(j.get<std::string>());
+    case nlohmann::json::value_t::boolean:
+      return tinygltf::Value(j.get<bool>());
     case nlohmann::json::value_t::number_integer:
     case nlohmann::json::value_t::number_unsigned: {
       // tinygltf integers are `int`; larger ones (a big seed) travel as double,
@@ -84,8 +86,10 @@ tinygltf::Value ToValue(const nlohmann::json& j) {
       if (value >= INT_MIN && value <= INT_MAX) return tinygltf::Value(j.get<int>());
       return tinygltf::Value(value);
     }
-    case nlohmann::json::value_t::number_float: return tinygltf::Value(j.get<double>());
-    default: return tinygltf::Value();
+    case nlohmann::json::value_t::number_float:
+      return tinygltf::Value(j.get<double>());
+    default:
+      return tinygltf::Value();
   }
 }
 
@@ -145,8 +149,9 @@ void AddSkinnedBoxMesh(const Skeleton& skeleton, BufferBuilder& buffers, tinyglt
         joints.insert(joints.end(), {static_cast<unsigned short>(j), 0, 0, 0});
         weights.insert(weights.end(), {1.0f, 0.0f, 0.0f, 0.0f});
       }
-      indices.insert(indices.end(), {base, static_cast<unsigned short>(base + 1), static_cast<unsigned short>(base + 2),
-                                     base, static_cast<unsigned short>(base + 2), static_cast<unsigned short>(base + 3)});
+      indices.insert(indices.end(),
+                     {base, static_cast<unsigned short>(base + 1), static_cast<unsigned short>(base + 2), base,
+                      static_cast<unsigned short>(base + 2), static_cast<unsigned short>(base + 3)});
     }
   }
   RISE_ASSERT_MSG(!positions.empty(), "the skeleton has no bone boxes to skin");
@@ -156,8 +161,9 @@ void AddSkinnedBoxMesh(const Skeleton& skeleton, BufferBuilder& buffers, tinyglt
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
   primitive.material = 0;
-  primitive.attributes["POSITION"] = buffers.AddAccessor(positions, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3,
-                                                         vertexCount, kArrayBuffer, {lo.x, lo.y, lo.z}, {hi.x, hi.y, hi.z});
+  primitive.attributes["POSITION"] =
+      buffers.AddAccessor(positions, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vertexCount, kArrayBuffer,
+                          {lo.x, lo.y, lo.z}, {hi.x, hi.y, hi.z});
   primitive.attributes["NORMAL"] =
       buffers.AddAccessor(normals, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vertexCount, kArrayBuffer);
   primitive.attributes["JOINTS_0"] = buffers.AddAccessor(joints, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
@@ -272,7 +278,8 @@ std::string Save(tinygltf::Model& model, const std::string& path, Container cont
   gltf.WriteGltfSceneToStream(&model, out, true, false);
   nlohmann::json doc = nlohmann::json::parse(out.str());
   doc["buffers"] = nlohmann::json::array({{{"byteLength", bin.size()}, {"uri", binPath.filename().string()}}});
-  if (std::string error = WriteFileAtomically(binPath.string(), {reinterpret_cast<const char*>(bin.data()), bin.size()});
+  if (std::string error =
+          WriteFileAtomically(binPath.string(), {reinterpret_cast<const char*>(bin.data()), bin.size()});
       !error.empty()) {
     return error;
   }
@@ -294,8 +301,8 @@ std::string WriteModel(const std::vector<NamedClip>& clips, const std::string& p
     RISE_ASSERT(entry.clip != nullptr);
     RISE_ASSERT_MSG(entry.clip->Validate().empty(), "writing an invalid clip");
     if (!SameSkeleton(skeleton, entry.clip->skeleton)) {
-      return "cannot write '" + path + "': clip '" + entry.name + "' has a different skeleton than '" +
-             clips[0].name + "'; one file holds one skeleton";
+      return "cannot write '" + path + "': clip '" + entry.name + "' has a different skeleton than '" + clips[0].name +
+             "'; one file holds one skeleton";
     }
   }
 
@@ -332,8 +339,7 @@ std::string WriteGltf(const Clip& clip, const std::string& path, const GltfOptio
   return options.writeSidecar ? WriteMetadataSidecar(clip, path) : std::string();
 }
 
-std::string WriteGltfLibrary(const std::vector<NamedClip>& clips, const std::string& path,
-                             const GltfOptions& options) {
+std::string WriteGltfLibrary(const std::vector<NamedClip>& clips, const std::string& path, const GltfOptions& options) {
   return WriteModel(clips, path, options);
 }
 

@@ -20,11 +20,11 @@
 //   asset.generator = "rise-gen <version>".
 #pragma once
 
-#include "export/clip.h"
-#include "export/joint_names.h"
-
 #include <string>
 #include <vector>
+
+#include "export/clip.h"
+#include "export/joint_names.h"
 
 namespace rise {
 
@@ -42,8 +42,8 @@ std::string WriteGltf(const Clip& clip, const std::string& path, const GltfOptio
 
 // One animation of a library file.
 struct NamedClip {
-  std::string name;   // the glTF animation name
-  const Clip* clip;   // not null; valid
+  std::string name;  // the glTF animation name
+  const Clip* clip;  // not null; valid
 };
 
 // Several clips of one skeleton as named animations of a single file (the

@@ -71,9 +71,12 @@ std::optional<NamingPreset> ParseNamingPreset(std::string_view name) {
 
 const char* NamingPresetName(NamingPreset preset) {
   switch (preset) {
-    case NamingPreset::kDefault: return "default";
-    case NamingPreset::kMixamo: return "mixamo";
-    case NamingPreset::kUe: return "ue";
+    case NamingPreset::kDefault:
+      return "default";
+    case NamingPreset::kMixamo:
+      return "mixamo";
+    case NamingPreset::kUe:
+      return "ue";
   }
   return "default";
 }

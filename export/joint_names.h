@@ -8,11 +8,11 @@
 // root. _l is the character's left (+X when standing facing +Z).
 #pragma once
 
-#include "export/skeleton.h"
-
 #include <optional>
 #include <string>
 #include <string_view>
+
+#include "export/skeleton.h"
 
 namespace rise {
 

@@ -2,10 +2,10 @@
 // The three `--root-motion` modes: bake, in-place and extract.
 #include "export/root_motion.h"
 
+#include <cmath>
+
 #include "base/assert.h"
 #include "export/rotation_track.h"
-
-#include <cmath>
 
 namespace rise {
 namespace {
@@ -30,7 +30,9 @@ std::vector<double> UnwrappedHeadings(const Clip& clip) {
   return headings;
 }
 
-glm::vec3 Ground(const glm::vec3& p) { return glm::vec3(p.x, 0.0f, p.z); }
+glm::vec3 Ground(const glm::vec3& p) {
+  return glm::vec3(p.x, 0.0f, p.z);
+}
 
 }  // namespace
 
@@ -43,9 +45,12 @@ std::optional<RootMotion> ParseRootMotion(std::string_view name) {
 
 const char* RootMotionName(RootMotion mode) {
   switch (mode) {
-    case RootMotion::kBake: return "bake";
-    case RootMotion::kInPlace: return "in-place";
-    case RootMotion::kExtract: return "extract";
+    case RootMotion::kBake:
+      return "bake";
+    case RootMotion::kInPlace:
+      return "in-place";
+    case RootMotion::kExtract:
+      return "extract";
   }
   return "bake";
 }

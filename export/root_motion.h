@@ -8,10 +8,10 @@
 // previous frame's heading is kept.
 #pragma once
 
-#include "export/clip.h"
-
 #include <optional>
 #include <string_view>
+
+#include "export/clip.h"
 
 namespace rise {
 

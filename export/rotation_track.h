@@ -8,7 +8,6 @@
 #pragma once
 
 #include <glm/gtc/quaternion.hpp>
-
 #include <vector>
 
 namespace rise {

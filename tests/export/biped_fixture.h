@@ -5,15 +5,14 @@
 // closed form at any time.
 #pragma once
 
-#include "export/clip.h"
-#include "export/clip_resample.h"
-
-#include <glm/gtc/quaternion.hpp>
-
 #include <cmath>
 #include <filesystem>
+#include <glm/gtc/quaternion.hpp>
 #include <random>
 #include <string>
+
+#include "export/clip.h"
+#include "export/clip_resample.h"
 
 namespace rise::test {
 
@@ -38,7 +37,8 @@ inline Skeleton MakeBipedSkeleton() {
     const float x = side[0] == 'l' ? 1.0f : -1.0f;  // the character's left is +X
     const std::string s_ = side;
     add(("upper_arm_" + s_).c_str(), "chest", {0.20f * x, 0.22f, 0}, {0, -0.145f, 0}, {0.05f, 0.145f, 0.05f});
-    add(("forearm_" + s_).c_str(), ("upper_arm_" + s_).c_str(), {0, -0.29f, 0}, {0, -0.13f, 0}, {0.045f, 0.13f, 0.045f});
+    add(("forearm_" + s_).c_str(), ("upper_arm_" + s_).c_str(), {0, -0.29f, 0}, {0, -0.13f, 0},
+        {0.045f, 0.13f, 0.045f});
     add(("hand_" + s_).c_str(), ("forearm_" + s_).c_str(), {0, -0.26f, 0}, {0, -0.085f, 0}, {0.04f, 0.085f, 0.02f});
     add(("hand_" + s_ + "_end").c_str(), ("hand_" + s_).c_str(), {0, -0.17f, 0});
   }
@@ -78,10 +78,12 @@ inline Pose SwingPose(const Skeleton& skeleton, double time) {
     if (name == "head") q = axis(0.4f * std::sin(1.7f * t), {0, 1, 0.3f});
     if (name.rfind("upper_arm", 0) == 0) q = axis(1.6f * std::sin(2.0f * t + phase), {1, 0, 0.3f * side});
     if (name.rfind("forearm", 0) == 0) q = axis(-0.8f - 0.6f * std::sin(2.5f * t + phase), {1, 0, 0});
-    if (name.rfind("hand_", 0) == 0 && name.find("_end") == std::string::npos) q = axis(0.5f * std::sin(4.0f * t), {0, 0, 1});
+    if (name.rfind("hand_", 0) == 0 && name.find("_end") == std::string::npos)
+      q = axis(0.5f * std::sin(4.0f * t), {0, 0, 1});
     if (name.rfind("thigh", 0) == 0) q = axis(1.0f * std::sin(1.5f * t + phase), {1, 0, 0.1f * side});
     if (name.rfind("shin", 0) == 0) q = axis(0.9f + 0.5f * std::sin(1.5f * t + phase), {1, 0, 0});
-    if (name.rfind("foot_", 0) == 0 && name.find("_end") == std::string::npos) q = axis(0.3f * std::sin(3.0f * t), {1, 0.2f, 0});
+    if (name.rfind("foot_", 0) == 0 && name.find("_end") == std::string::npos)
+      q = axis(0.3f * std::sin(3.0f * t), {1, 0.2f, 0});
   }
   return pose;
 }
@@ -144,7 +146,8 @@ class TempFolder {
   // Names of the files in the folder.
   std::vector<std::string> Files() const {
     std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(path_)) names.push_back(entry.path().filename().string());
+    for (const auto& entry : std::filesystem::directory_iterator(path_))
+      names.push_back(entry.path().filename().string());
     return names;
   }
 

@@ -5,15 +5,17 @@
 // file that Blender re-exported, to prove the reader handles another tool's
 // conventions (bone rest rotations, its own inverse bind matrices).
 // Usage: compare_clips <reference.glb> <other.glb>
-#include "export/gltf_reader.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "export/gltf_reader.h"
+
 namespace {
 
-float Distance(const glm::vec3& a, const glm::vec3& b) { return glm::length(a - b); }
+float Distance(const glm::vec3& a, const glm::vec3& b) {
+  return glm::length(a - b);
+}
 
 }  // namespace
 
@@ -45,7 +47,8 @@ int main(int argc, char** argv) {
     }
     const rise::BoneBox& box = reference.skeleton.joints[r].box;
     if (joint.hasBox != reference.skeleton.joints[r].hasBox) ok = false;
-    worstBox = std::max({worstBox, Distance(joint.box.center, box.center), Distance(joint.box.halfExtents, box.halfExtents)});
+    worstBox =
+        std::max({worstBox, Distance(joint.box.center, box.center), Distance(joint.box.halfExtents, box.halfExtents)});
     for (int f = 0; f < other.FrameCount(); ++f) {
       worstPosition = std::max(worstPosition, Distance(other.WorldPositions(f)[j], reference.WorldPositions(f)[r]));
     }

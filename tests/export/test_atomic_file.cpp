@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
+#include <fstream>
+#include <sstream>
+
 #include "export/atomic_file.h"
 #include "export/biped_fixture.h"
 #include "test_support.h"
-
-#include <fstream>
-#include <sstream>
 
 namespace {
 
@@ -18,38 +18,38 @@ std::string Contents(const std::string& path) {
 }  // namespace
 
 TEST_SUITE("atomic_file") {
-TEST_CASE("writes the bytes, replaces an existing file and leaves no temporary behind") {
-  rise::test::TempFolder folder;
-  const std::string path = folder.File("clip.glb");
-  REQUIRE(rise::WriteFileAtomically(path, std::string("first\0binary", 12)).empty());
-  CHECK(Contents(path) == std::string("first\0binary", 12));
-  REQUIRE(rise::WriteFileAtomically(path, "second").empty());
-  CHECK(Contents(path) == "second");
-  CHECK(folder.Files() == std::vector<std::string>{"clip.glb"});
-}
-TEST_CASE("a missing folder gives a clear error and creates nothing") {
-  rise::test::TempFolder folder;
-  const std::string path = folder.File("missing/clip.glb");
-  const std::string error = rise::WriteFileAtomically(path, "data");
-  CHECK(error.find("does not exist") != std::string::npos);
-  CHECK(error.find(path) != std::string::npos);
-  CHECK(folder.Files().empty());
-}
-TEST_CASE("a path naming a folder, an empty path and a trailing slash are rejected") {
-  rise::test::TempFolder folder;
-  std::filesystem::create_directory(folder.Path() / "out.glb");
-  CHECK(rise::WriteFileAtomically(folder.File("out.glb"), "data").find("folder") != std::string::npos);
-  CHECK(std::filesystem::is_directory(folder.Path() / "out.glb"));
-  CHECK(rise::WriteFileAtomically("", "data").find("empty") != std::string::npos);
-  CHECK(rise::WriteFileAtomically(folder.File("sub") + "/", "data").find("folder") != std::string::npos);
-  CHECK(folder.Files() == std::vector<std::string>{"out.glb"});
-}
-TEST_CASE("an unwritable folder gives the system's reason and leaves no file") {
-  // /proc refuses new files even to root, so this holds whoever runs the tests.
-  const std::string path = "/proc/rise_clip.glb";
-  const std::string error = rise::WriteFileAtomically(path, "data");
-  CHECK_FALSE(error.empty());
-  CHECK(error.find("cannot write '/proc/rise_clip.glb'") == 0);
-  CHECK_FALSE(std::filesystem::exists(path));
-}
+  TEST_CASE("writes the bytes, replaces an existing file and leaves no temporary behind") {
+    rise::test::TempFolder folder;
+    const std::string path = folder.File("clip.glb");
+    REQUIRE(rise::WriteFileAtomically(path, std::string("first\0binary", 12)).empty());
+    CHECK(Contents(path) == std::string("first\0binary", 12));
+    REQUIRE(rise::WriteFileAtomically(path, "second").empty());
+    CHECK(Contents(path) == "second");
+    CHECK(folder.Files() == std::vector<std::string>{"clip.glb"});
+  }
+  TEST_CASE("a missing folder gives a clear error and creates nothing") {
+    rise::test::TempFolder folder;
+    const std::string path = folder.File("missing/clip.glb");
+    const std::string error = rise::WriteFileAtomically(path, "data");
+    CHECK(error.find("does not exist") != std::string::npos);
+    CHECK(error.find(path) != std::string::npos);
+    CHECK(folder.Files().empty());
+  }
+  TEST_CASE("a path naming a folder, an empty path and a trailing slash are rejected") {
+    rise::test::TempFolder folder;
+    std::filesystem::create_directory(folder.Path() / "out.glb");
+    CHECK(rise::WriteFileAtomically(folder.File("out.glb"), "data").find("folder") != std::string::npos);
+    CHECK(std::filesystem::is_directory(folder.Path() / "out.glb"));
+    CHECK(rise::WriteFileAtomically("", "data").find("empty") != std::string::npos);
+    CHECK(rise::WriteFileAtomically(folder.File("sub") + "/", "data").find("folder") != std::string::npos);
+    CHECK(folder.Files() == std::vector<std::string>{"out.glb"});
+  }
+  TEST_CASE("an unwritable folder gives the system's reason and leaves no file") {
+    // /proc refuses new files even to root, so this holds whoever runs the tests.
+    const std::string path = "/proc/rise_clip.glb";
+    const std::string error = rise::WriteFileAtomically(path, "data");
+    CHECK_FALSE(error.empty());
+    CHECK(error.find("cannot write '/proc/rise_clip.glb'") == 0);
+    CHECK_FALSE(std::filesystem::exists(path));
+  }
 }

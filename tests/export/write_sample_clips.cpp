@@ -2,16 +2,15 @@
 // Writes the synthetic sample clips that the external checks (glTF-Validator,
 // Blender import) read: every glTF variant the writer makes, and a BVH.
 // Usage: write_sample_clips <folder>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
 #include "export/biped_fixture.h"
 #include "export/bvh_writer.h"
 #include "export/gltf_writer.h"
 #include "export/root_motion.h"
-
-#include <nlohmann/json.hpp>
-
-#include <cstdio>
-#include <fstream>
-#include <filesystem>
 
 int main(int argc, char** argv) {
   if (argc != 2) {
