@@ -107,6 +107,13 @@ def main():
     if result != {"FINISHED"}:
         fail("glTF export returned %s" % result)
 
+    # Extracted root motion: a ground-level "root" bone above the pelvis, same world motion.
+    reset_scene(expected["fps"])
+    result = bpy.ops.import_scene.gltf(filepath=os.path.join(folder, "sample_extract.glb"))
+    if result != {"FINISHED"}:
+        fail("glTF import of sample_extract.glb returned %s" % result)
+    check("sample_extract.glb", only_armature(), ["root"] + joints, expected, y_up_to_blender)
+
     for name, scale, up, forward in (("sample.bvh", 1.0, "Y", "-Z"), ("sample_cm_z.bvh", 0.01, "Z", "Y")):
         reset_scene(expected["fps"])
         result = bpy.ops.import_anim.bvh(filepath=os.path.join(folder, name), global_scale=scale, axis_up=up,
