@@ -1,2 +1,221 @@
 // SPDX-License-Identifier: MIT
 #include "core/generate.h"
+
+#include "core/biped.h"
+#include "core/input_json.h"
+#include "export/clip_resample.h"
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace rise {
+namespace {
+
+// A hand or foot touches the ground when a contact presses with at least this force.
+constexpr float kTouchForce = 1.0f;  // N
+
+// Builds what the controller reads from the simulated biped.
+void ReadBody(const Biped& biped, const physics::World& world, const BodyRig& rig,
+              std::vector<physics::ContactInfo>& scratch, BodyReading& reading) {
+  const std::vector<physics::Transform> joints = biped.JointWorldTransforms();
+  reading.time = world.Time();
+  reading.jointPositions.resize(joints.size());
+  reading.jointRotations.resize(joints.size());
+  for (size_t j = 0; j < joints.size(); ++j) {
+    reading.jointPositions[j] = joints[j].position;
+    reading.jointRotations[j] = joints[j].rotation;
+  }
+  reading.com = biped.CenterOfMass();
+  reading.comVelocity = biped.CenterOfMassVelocity();
+  reading.maxBodySpeed = biped.MaxBodySpeed();
+  reading.maxAngularSpeed = 0.0f;
+  for (int j = 0; j < static_cast<int>(joints.size()); ++j) {
+    const physics::BodyId body = biped.BodyOf(j);
+    if (body.IsValid()) reading.maxAngularSpeed = std::max(reading.maxAngularSpeed, glm::length(world.GetAngularVelocity(body)));
+  }
+  for (int i = 0; i < kLimbCount; ++i) {
+    world.GetGroundContacts(biped.BodyOf(rig.end[i]), scratch);
+    reading.touching[i] = std::any_of(scratch.begin(), scratch.end(),
+                                      [](const physics::ContactInfo& c) { return c.normalForce >= kTouchForce; });
+  }
+}
+
+// Open contact intervals become ContactSpans when they close (or at the end).
+struct ContactTracker {
+  std::array<double, kLimbCount> since{-1.0, -1.0, -1.0, -1.0};
+  std::array<bool, kLimbCount> lockedThroughout{};
+
+  void Update(double time, const std::array<bool, kLimbCount>& touching, const std::array<bool, kLimbCount>& planted,
+              std::vector<ContactSpan>& out) {
+    for (int i = 0; i < kLimbCount; ++i) {
+      if (touching[i] && since[i] < 0.0) since[i] = time, lockedThroughout[i] = planted[i];
+      if (touching[i]) lockedThroughout[i] = lockedThroughout[i] && planted[i];
+      if (!touching[i] && since[i] >= 0.0) Close(i, time, out);
+    }
+  }
+  void Close(int i, double time, std::vector<ContactSpan>& out) {
+    out.push_back({LimbName(static_cast<Limb>(i)), since[i], time, lockedThroughout[i]});
+    since[i] = -1.0;
+  }
+};
+
+std::string Describe(const physics::StepStatus& status, double time, const Biped& biped) {
+  std::string body = "?";
+  for (int j = 0; j < biped.Def().skeleton.JointCount(); ++j) {
+    if (biped.BodyOf(j).index == status.firstBadBody) body = biped.Def().skeleton.joints[j].name;
+  }
+  char text[200];
+  std::snprintf(text, sizeof text, "simulation became unstable at %.3f s (%s in body '%s')", time,
+                (status.flags & physics::kStepNonFinite) ? "non-finite state" : "speed over the health limit",
+                body.c_str());
+  return text;
+}
+
+}  // namespace
+
+GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& settings) {
+  GeneratedClip result;
+  const BipedDef def = MakeBipedDef(spec.character);
+  physics::World world(BipedWorldSettings());
+  AddGround(world, spec.terrain);
+  Biped biped(def, world, StartPose(def, spec.start, spec.terrain.slopeDeg),
+              static_cast<float>(spec.terrain.friction));
+  biped.SetServosEnabled(true);
+
+  RiseController controller(biped.Def(), spec);
+  const BodyRig rig = BodyRig::FromSkeleton(def.skeleton, 2.5f, 2.5f);
+  const int jointCount = def.skeleton.JointCount();
+  const double dt = world.Settings().timeStep;
+  const int maxSteps = static_cast<int>(std::ceil(spec.maxDurationS / dt));
+
+  MotionSamples samples;
+  samples.rotations.assign(jointCount, {});
+  ClipMetadata metadata;
+  std::vector<double> peakTorque(jointCount, 0.0);
+  ContactTracker contacts;
+  RisePhase phase = controller.Phase();
+  double phaseStart = 0.0;
+  BodyReading reading;
+  ServoTargets targets;
+  std::vector<float> appliedScale(jointCount, -1.0f);
+  std::vector<physics::ContactInfo> scratch;
+
+  auto record = [&](double time) {
+    const BipedPose pose = biped.Pose();
+    samples.times.push_back(time);
+    samples.rootTranslation.push_back(pose.root.position);
+    samples.rotations[0].push_back(pose.root.rotation);
+    for (int j = 1; j < jointCount; ++j) samples.rotations[j].push_back(pose.local[j]);
+  };
+
+  for (int step = 0; step <= maxSteps; ++step) {
+    ReadBody(biped, world, rig, scratch, reading);
+    controller.Update(reading, targets);
+    const double time = reading.time;
+    record(time);
+    contacts.Update(time, reading.touching, controller.Planted(), metadata.contacts);
+    if (controller.Phase() != phase) {
+      metadata.phases.push_back({RisePhaseName(phase), phaseStart, time});
+      phase = controller.Phase();
+      phaseStart = time;
+    }
+    if (settings.keepTrace) result.trace.push_back(controller.LastTrace());
+    if (controller.Finished() || step == maxSteps) break;
+
+    for (int j = 1; j < jointCount; ++j) {
+      if (!biped.JointOf(j).IsValid()) continue;
+      biped.SetLocalTarget(j, targets.local[j]);
+      world.SetMotorFeedForward(biped.JointOf(j), targets.feedForward[j]);
+      if (targets.gainScale[j] != appliedScale[j]) {
+        const BoneDef& bone = def.bones[j];
+        biped.SetServoGains(j, bone.servoKp * targets.gainScale[j], bone.servoKd * targets.gainScale[j],
+                            bone.maxTorqueNm);
+        appliedScale[j] = targets.gainScale[j];
+      }
+    }
+    for (const Disturbance& push : spec.disturbances) {
+      if (time + 1e-9 >= push.timeS && time < push.timeS + push.durationS) {
+        const physics::BodyId body = biped.BodyOf(def.Find(push.body));
+        world.ApplyForce(body, glm::vec3(push.forceN[0], push.forceN[1], push.forceN[2]),
+                         world.GetTransform(body).position);
+      }
+    }
+    const physics::StepStatus status = world.Step();
+    for (int j = 1; j < jointCount; ++j) {
+      if (biped.JointOf(j).IsValid()) {
+        peakTorque[j] = std::max(peakTorque[j], static_cast<double>(glm::length(world.GetMotorTorque(biped.JointOf(j)))));
+      }
+    }
+    if (!status.Ok()) {
+      result.health = {false, Describe(status, world.Time(), biped)};
+      break;
+    }
+    if (settings.onProgress && step % 240 == 0) settings.onProgress(world.Time(), spec.maxDurationS);
+  }
+
+  const double end = samples.times.back();
+  metadata.phases.push_back({RisePhaseName(phase), phaseStart, end});
+  for (int i = 0; i < kLimbCount; ++i) {
+    if (contacts.since[i] >= 0.0) contacts.Close(i, end, metadata.contacts);
+  }
+  std::sort(metadata.contacts.begin(), metadata.contacts.end(),
+            [](const ContactSpan& a, const ContactSpan& b) { return a.start < b.start || (a.start == b.start && a.effector < b.effector); });
+  metadata.parametersJson = RiseSpecToJson(spec).dump();
+  metadata.generatorVersion = RISE_VERSION;
+  metadata.seed = spec.seed;
+  result.stood = controller.Finished();
+  result.timeToStand = result.stood ? controller.StandTime() : -1.0;
+  metadata.timeToStand = result.timeToStand;
+  for (int j = 1; j < jointCount; ++j) {
+    if (biped.JointOf(j).IsValid()) metadata.peakTorques.emplace_back(def.skeleton.joints[j].name, peakTorque[j]);
+  }
+  result.retries = controller.Retries();
+  result.simulatedSeconds = end;
+  result.clip = ResampleClip(def.skeleton, samples, spec.fps, metadata);
+
+  char outcome[160];
+  if (!result.health.ok) {
+    std::snprintf(outcome, sizeof outcome, "failed: %s", result.health.message.c_str());
+  } else if (result.stood) {
+    std::snprintf(outcome, sizeof outcome, "stood at %.2f s", result.timeToStand);
+  } else {
+    std::snprintf(outcome, sizeof outcome, "did not stand within %.1f s (last phase: %s)", spec.maxDurationS,
+                  RisePhaseName(controller.Phase()));
+  }
+  result.outcome = outcome;
+  return result;
+}
+
+std::string TraceToJsonLines(const std::vector<TraceSample>& trace) {
+  auto vec = [](const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); };
+  std::string text;
+  for (const TraceSample& sample : trace) {
+    nlohmann::json line;
+    line["t"] = sample.time;
+    line["phase"] = RisePhaseName(sample.phase);
+    line["move"] = sample.move;
+    line["com"] = vec(sample.com);
+    line["com_goal"] = vec(sample.comGoal);
+    line["tracking_error"] = sample.trackingError;
+    nlohmann::json support = nlohmann::json::array();
+    for (const glm::vec2& p : sample.support.hull) support.push_back({p.x, p.y});
+    line["support"] = support;
+    for (int i = 0; i < kLimbCount; ++i) {
+      nlohmann::json limb;
+      limb["target"] = vec(sample.limbTargets[i]);
+      limb["touching"] = sample.touching[i];
+      limb["planted"] = sample.planted[i];
+      line[LimbName(static_cast<Limb>(i))] = limb;
+    }
+    text += line.dump() + "\n";
+  }
+  return text;
+}
+
+}  // namespace rise

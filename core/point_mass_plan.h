@@ -27,7 +27,11 @@ struct PointMassPlan {
   bool hasSupportHand = true;
   LimbRange leg;
   LimbRange arm;
+  // Static balance once the free hand lets go: the CoM's ground projection
+  // stays this far inside the support triangle (both feet + support hand).
+  float balanceMargin = 0.03f;
   float minHeight = 0.1f;       // CoM may not drop below this (the body would touch the ground)
+  float preferredHeight = 0.0f; // among equally good goals, the CoM height closest to this (0: none)
   float maxStep = 0.25f;        // farthest the CoM may move in one iteration, metres
 
   // Outputs.
@@ -39,6 +43,8 @@ struct PointMassPlan {
   bool Validate() const;
   void Solve();
 
+  // The support region while the free hand is off the ground.
+  SupportPolygon SupportTriangle() const;
   // Every limb length (CoM to contact) within its range, with `slack` metres of tolerance.
   bool LimbsWithinRange(const glm::vec3& candidate, float slack) const;
 };

@@ -46,12 +46,28 @@ TEST_CASE("the arm's maximum length stops the CoM before the feet: the hand must
 
 TEST_CASE("with the hand close to the feet the CoM reaches the feet region") {
   rise::PointMassPlan plan = Crawl();
-  plan.supportHand = {0.2f, 0.0f, 0.35f};
-  plan.com = {0.0f, 0.45f, 0.3f};
+  // Two feet as boxes 26 cm long, toes at z = 0.15.
+  plan.feetRegion = rise::SupportPolygon::FromPoints({{-0.17f, -0.11f}, {0.17f, -0.11f}, {0.17f, 0.15f}, {-0.17f, 0.15f}});
+  plan.supportHand = {0.2f, 0.0f, 0.45f};
+  plan.com = {0.0f, 0.45f, 0.35f};
   plan.maxStep = 0.5f;
   plan.Solve();
   CHECK(plan.overFeet);
-  CHECK(std::fabs(plan.target.z) < 1e-3f);
+  CHECK(plan.distanceToFeet <= 1e-3f);
+  CHECK(plan.feetRegion.SignedDistance(rise::Ground(plan.target)) <= 0.0f);
+  // Still statically balanced over the triangle of both feet and the hand.
+  CHECK(plan.SupportTriangle().SignedDistance(rise::Ground(plan.target)) <= -plan.balanceMargin + 1e-4f);
+}
+
+TEST_CASE("a CoM outside the support triangle is first moved sideways into it") {
+  rise::PointMassPlan plan = Crawl();
+  plan.Solve();
+  CHECK(plan.feasible);
+  // The start (x = 0) is outside the triangle of feet (x = +-0.12) and hand
+  // (x = 0.2): the goal lies toward the hand's side.
+  CHECK(plan.SupportTriangle().SignedDistance(rise::Ground(plan.com)) > 0.0f);
+  CHECK(plan.target.x > 0.01f);
+  CHECK(plan.SupportTriangle().SignedDistance(rise::Ground(plan.target)) <= -plan.balanceMargin + 1e-4f);
 }
 
 TEST_CASE("an infeasible start reports it") {

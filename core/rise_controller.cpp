@@ -1,0 +1,792 @@
+// SPDX-License-Identifier: MIT
+#include "core/rise_controller.h"
+
+#include "base/assert.h"
+#include "core/bezier.h"
+#include "core/biped.h"
+#include "core/point_mass_plan.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/gtx/matrix_operation.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rise {
+namespace {
+
+constexpr float kPi = glm::pi<float>();
+const glm::vec3 kUp(0.0f, 1.0f, 0.0f);
+
+// Rest: the fallen body has stopped (the paper waits for this before rising).
+constexpr float kRestSpeed = 0.08f;         // m/s
+constexpr float kRestSpin = 0.4f;           // rad/s
+constexpr double kRestHold = 0.25;          // s the body must stay below both
+// Standing still long enough to end the clip (the checker looks at the last 0.5 s).
+constexpr double kStandHold = 1.2;          // s
+// Tracking-error gate: moves slow down when the pelvis lags its goal.
+constexpr float kGateError = 0.06f;         // m: full speed below this
+constexpr float kGateStop = 0.20f;          // m: slowest pace at and above this
+constexpr double kStallTime = 1.5;        // s a move may lag beyond kGateStop before it is re-planned
+constexpr int kMaxCrawlSteps = 16;
+// Crawl geometry: how far a hand moves per step, and how far ahead of the feet
+// the hands rest in a squat with the CoM over the feet.
+constexpr float kHandStep = 0.25f;        // m
+constexpr float kSquatHandsAhead = 0.38f; // m
+constexpr float kSquatComRatio = 0.6f;
+// Supporting arms are kept nearly straight (elbow ~15 deg), so the weight goes
+// down the bones instead of through the weak elbow and wrist servos.
+constexpr float kSupportArmReach = 0.985f;  // shoulder-to-wrist, of the arm's reach
+// Planted hands' wrists go soft so the palm lies flat and takes load at its heel.
+constexpr float kPlantedWristGain = 0.15f;
+// Feet at least this far either side of the midline in the crawl, so the
+// triangle of both feet and one hand contains the CoM with a small lean.
+constexpr float kCrawlHalfStance = 0.2f;  // m    // CoM height in that squat, of the standing CoM height
+constexpr int kMaxRetries = 4;
+
+bool IsArm(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kHandRight; }
+bool IsLeft(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kFootLeft; }
+Limb OtherHand(Limb hand) { return hand == Limb::kHandLeft ? Limb::kHandRight : Limb::kHandLeft; }
+
+glm::vec3 Horizontal(const glm::vec3& v) { return {v.x, 0.0f, v.z}; }
+
+glm::vec3 SafeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
+  const float length = glm::length(v);
+  return length > 1e-5f ? v / length : fallback;
+}
+
+// Rotation about +Y that turns +Z onto the horizontal direction `forward`.
+glm::quat HeadingRotation(const glm::vec3& forward) {
+  return glm::angleAxis(std::atan2(forward.x, forward.z), kUp);
+}
+
+// Rotation with the given images of +X and +Y (both unit, orthogonal).
+glm::quat FromAxes(const glm::vec3& x, const glm::vec3& y) {
+  return glm::normalize(glm::quat_cast(glm::mat3(x, y, glm::cross(x, y))));
+}
+
+float Blend(float s, float delay, float span) { return Ease((s - delay) / std::max(span, 1e-3f)); }
+
+float Height(const physics::PlaneShape& plane, const glm::vec3& p) { return glm::dot(plane.normal, p) - plane.offset; }
+glm::vec3 Project(const physics::PlaneShape& plane, const glm::vec3& p) { return p - plane.normal * Height(plane, p); }
+
+}  // namespace
+
+const char* RisePhaseName(RisePhase phase) {
+  switch (phase) {
+    case RisePhase::kSettle: return "settle";
+    case RisePhase::kRoll: return "roll";
+    case RisePhase::kPlace: return "place";
+    case RisePhase::kPush: return "push";
+    case RisePhase::kCrawl: return "crawl";
+    case RisePhase::kRise: return "rise";
+    case RisePhase::kStand: return "stand";
+  }
+  return "?";
+}
+
+RiseController::RiseController(const BipedDef& def, const RiseSpec& spec)
+    : def_(def), spec_(spec), ground_(GroundPlane(spec.terrain.slopeDeg)), rng_(static_cast<uint32_t>(spec.seed)) {
+  const int elbow = def.Find("forearm_l"), knee = def.Find("shin_l");
+  const float maxElbow = glm::radians(def.bones[elbow].dofs[0].maxDeg) - 0.05f;
+  const float maxKnee = glm::radians(def.bones[knee].dofs[0].maxDeg) - 0.05f;
+  rig_ = BodyRig::FromSkeleton(def.skeleton, maxElbow, maxKnee);
+  for (const BoneDef& bone : def.bones) totalMass_ += bone.massKg;
+  const Skeleton& sk = def.skeleton;
+  armReach_ = glm::length(sk.joints[rig_.lower[0]].restOffset) + glm::length(sk.joints[rig_.end[0]].restOffset);
+  legReach_ = glm::length(sk.joints[rig_.lower[2]].restOffset) + glm::length(sk.joints[rig_.end[2]].restOffset);
+  standPelvisHeight_ = sk.BindPositions()[rig_.pelvis].y;
+  standComHeight_ = def.BindCenterOfMass().y;
+  shoulderHalfWidth_ = std::fabs(sk.BindPositions()[rig_.upper[0]].x);
+  // The crawl keeps the hips high (a pike), so knees stay off the ground.
+  crawlComHeight_ = 0.5f * standComHeight_;
+  const BoneBox& foot = sk.joints[rig_.end[2]].box;
+  toeLocal_ = glm::vec3(0.0f, foot.center.y - foot.halfExtents.y, foot.center.z + foot.halfExtents.z);
+  heelLocal_ = glm::vec3(0.0f, foot.center.y - foot.halfExtents.y, foot.center.z - foot.halfExtents.z);
+  // Dorsiflexion is the negative end of the ankle's first DOF (see biped_def.h).
+  ankleDorsiflexionLimit_ = glm::radians(std::fabs(def.bones[rig_.end[2]].dofs[0].maxDeg));
+  subtree_.assign(sk.joints.size(), {});
+  for (int j = sk.JointCount() - 1; j >= 0; --j) {
+    subtree_[j].push_back(j);
+    if (sk.joints[j].parent >= 0) {
+      std::vector<int>& parent = subtree_[sk.joints[j].parent];
+      parent.insert(parent.end(), subtree_[j].begin(), subtree_[j].end());
+    }
+  }
+  trace_.phase = phase_;
+}
+
+// ---------------------------------------------------------------------------
+// Geometry of the measured body
+
+RiseController::TrunkPose RiseController::MeasuredTrunk(const BodyReading& r) const {
+  return TrunkPose{r.jointPositions[rig_.pelvis], r.jointRotations[rig_.pelvis], r.jointRotations[rig_.chest]};
+}
+
+RiseController::LimbMove RiseController::HoldLimb(const BodyReading& r, Limb limb, bool planted) const {
+  const int end = rig_.end[static_cast<int>(limb)];
+  LimbMove hold;
+  hold.mode = LimbMode::kWorld;
+  hold.from = hold.to = r.jointPositions[end];
+  hold.fromRotation = hold.toRotation = r.jointRotations[end];
+  hold.planted = planted;
+  return hold;
+}
+
+glm::vec3 RiseController::FeetCentre(const BodyReading& r) const {
+  glm::vec3 sum(0.0f);
+  for (int i = 2; i < 4; ++i) {
+    const int foot = rig_.end[i];
+    const BoneBox& box = def_.skeleton.joints[foot].box;
+    sum += r.jointPositions[foot] + r.jointRotations[foot] * box.center;
+  }
+  return Project(ground_, sum * 0.5f);
+}
+
+SupportPolygon RiseController::FeetRegion(const BodyReading& r) const {
+  // The soles as they lie once flat: from each toe edge back along the heading
+  // by the foot's length. While the heels are still up the body rests on its
+  // toes, but the rise flattens the feet, so this is the region the CoM must
+  // reach before the hands let go.
+  const BoneBox& box = def_.skeleton.joints[rig_.end[2]].box;
+  const float footLength = 2.0f * box.halfExtents.z;
+  const glm::vec3 left = glm::normalize(glm::cross(kUp, heading_));
+  std::vector<glm::vec2> points;
+  for (int i = 2; i < 4; ++i) {
+    const int foot = rig_.end[i];
+    const glm::vec3 toe = Project(ground_, r.jointPositions[foot] + r.jointRotations[foot] * toeLocal_);
+    for (float side : {-1.0f, 1.0f}) {
+      const glm::vec3 edge = toe + left * side * box.halfExtents.x;
+      points.push_back(Ground(edge));
+      points.push_back(Ground(edge - heading_ * footLength));
+    }
+  }
+  return SupportPolygon::FromPoints(points);
+}
+
+SupportPolygon RiseController::SupportRegion(const BodyReading& r) const {
+  std::vector<glm::vec2> points = FeetRegion(r).hull;
+  for (int i = 0; i < 2; ++i) {
+    if (planted_[i]) points.push_back(Ground(r.jointPositions[rig_.end[i]]));
+  }
+  return SupportPolygon::FromPoints(points);
+}
+
+glm::vec3 RiseController::HeadingForward(const BodyReading& r) const {
+  // The direction from the pelvis toward the head, along the ground: the way
+  // the body will face once it stands after rising over its feet.
+  const glm::vec3 along = r.jointPositions[rig_.head] - r.jointPositions[rig_.pelvis];
+  return SafeNormalize(Horizontal(along), glm::vec3(0.0f, 0.0f, 1.0f));
+}
+
+// ---------------------------------------------------------------------------
+// Placement helpers
+
+glm::quat RiseController::TrunkRotation(const glm::vec3& forward, float pitch) const {
+  // pitch 0: lying face down with the head toward `forward`; pi/2: upright
+  // facing `forward`; negative: head down (the pike of the crawl).
+  return glm::normalize(HeadingRotation(forward) * glm::angleAxis(0.5f * kPi - pitch, glm::vec3(1, 0, 0)));
+}
+
+glm::quat RiseController::FootRotation(const glm::vec3& forward, float heelLift) const {
+  // Flat on the ground plane, toes along `forward`, heel raised about the toe edge.
+  const glm::vec3 n = ground_.normal;
+  const glm::vec3 toes = SafeNormalize(forward - n * glm::dot(forward, n), glm::vec3(0, 0, 1));
+  const glm::quat flat = FromAxes(glm::cross(n, toes), n);
+  return glm::normalize(flat * glm::angleAxis(heelLift, glm::vec3(1, 0, 0)));
+}
+
+glm::quat RiseController::HandRotation(Limb hand, const glm::vec3& fingers) const {
+  // The bone's -Y points along the fingers; the palm (-X of the left hand,
+  // +X of the right, facing the thigh in the bind pose) faces the ground.
+  const glm::vec3 n = ground_.normal;
+  const glm::vec3 along = SafeNormalize(fingers - n * glm::dot(fingers, n), glm::vec3(0, 0, 1));
+  const glm::vec3 x = hand == Limb::kHandLeft ? n : -n;
+  return FromAxes(x, -along);
+}
+
+glm::quat RiseController::PlantedHandRotation(Limb hand) const {
+  // The arm has no pronation (shoulder and wrist are 2-DOF, the elbow a hinge),
+  // so a palm laid flat in front of the shoulder can only point its fingers
+  // outward, turned a little forward: wrist extension does the rest.
+  const glm::vec3 left = glm::normalize(glm::cross(kUp, heading_));
+  return HandRotation(hand, left * (IsLeft(hand) ? 1.0f : -1.0f) + heading_ * 0.35f);
+}
+
+glm::vec3 RiseController::WristAbove(Limb hand, const glm::vec3& groundPoint, const glm::quat& rotation) const {
+  const BoneBox& box = def_.skeleton.joints[rig_.end[static_cast<int>(hand)]].box;
+  glm::vec3 palmOffset = rotation * box.center;
+  palmOffset -= ground_.normal * glm::dot(palmOffset, ground_.normal);
+  return WristForPalm(hand, groundPoint + palmOffset, rotation);
+}
+
+glm::vec3 RiseController::WristForPalm(Limb hand, const glm::vec3& palmPoint, const glm::quat& rotation) const {
+  const BoneBox& box = def_.skeleton.joints[rig_.end[static_cast<int>(hand)]].box;
+  const glm::vec3 boxCentre = palmPoint + ground_.normal * (box.halfExtents.x + 0.002f);
+  return boxCentre - rotation * box.center;
+}
+
+glm::vec3 RiseController::AnkleForToe(const glm::vec3& toePoint, const glm::quat& rotation) const {
+  return toePoint + ground_.normal * 0.002f - rotation * toeLocal_;
+}
+
+glm::vec3 RiseController::PoseCom(const PoseGoal& goal) const {
+  const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
+  glm::vec3 sum(0.0f);
+  for (int j = 0; j < def_.skeleton.JointCount(); ++j) {
+    const SkeletonJoint& joint = def_.skeleton.joints[j];
+    if (!joint.hasBox) continue;
+    sum += def_.bones[j].massKg * (pose.worldPositions[j] + pose.worldRotations[j] * joint.box.center);
+  }
+  return sum / totalMass_;
+}
+
+RiseController::TrunkPose RiseController::TrunkForCom(const glm::vec3& comGoal, const glm::vec3& forward,
+                                                      const TrunkPose& start,
+                                                      const std::array<LimbMove, kLimbCount>& limbs,
+                                                      float handReachFraction) const {
+  // Hands that support the trunk decide its pitch: the shoulders should sit
+  // handReachFraction of the arm's reach from them (arms nearly straight).
+  glm::vec3 hands(0.0f);
+  int handCount = 0;
+  for (int i = 0; i < 2; ++i) {
+    if (limbs[i].planted) hands += limbs[i].to, ++handCount;
+  }
+  TrunkPose trunk = start;
+  Move probe;
+  probe.limbs = limbs;
+  float pitch = 0.0f;
+  for (int iteration = 0; iteration < 6; ++iteration) {
+    if (handCount > 0) {
+      const glm::vec3 handCentre = hands / static_cast<float>(handCount);
+      float bestCost = 1e9f;
+      for (int k = 0; k <= 48; ++k) {
+        const float candidate = glm::radians(-70.0f + 150.0f * static_cast<float>(k) / 48.0f);
+        PoseGoal goal;
+        goal.pelvisPosition = trunk.pelvis;
+        goal.pelvisRotation = goal.chestRotation = TrunkRotation(forward, candidate);
+        const glm::vec3 shoulders =
+            0.5f * (LimbRoot(def_.skeleton, rig_, goal, Limb::kHandLeft) +
+                    LimbRoot(def_.skeleton, rig_, goal, Limb::kHandRight));
+        const float cost = std::fabs(glm::length(shoulders - handCentre) - handReachFraction * armReach_);
+        if (cost < bestCost) bestCost = cost, pitch = candidate;
+      }
+      trunk.pelvisRotation = trunk.chestRotation = TrunkRotation(forward, pitch);
+    }
+    probe.from = probe.to = trunk;
+    const PoseGoal goal = GoalAt(probe, 1.0f, BodyReading{});
+    trunk.pelvis += comGoal - PoseCom(goal);
+  }
+  return trunk;
+}
+
+// ---------------------------------------------------------------------------
+// Evaluating a move
+
+void RiseController::EvaluateLimb(const LimbMove& limb, Limb which, float s, const PoseGoal& trunkGoal,
+                                  LimbGoal& out) const {
+  const float u = Blend(s, limb.delay, limb.span);
+  const glm::quat rotation = glm::slerp(limb.fromRotation, limb.toRotation, u);
+  switch (limb.mode) {
+    case LimbMode::kWorld:
+      out.target = limb.lift > 0.0f ? SwingPath{limb.from, limb.to, ground_.normal, limb.lift}.At(u)
+                                    : glm::mix(limb.from, limb.to, u);
+      out.endRotation = rotation;
+      break;
+    case LimbMode::kToePivot:
+      out.endRotation = rotation;
+      out.target = AnkleForToe(glm::mix(limb.from, limb.to, u), rotation);
+      break;
+    case LimbMode::kBody: {
+      const glm::quat frame = IsArm(which) ? trunkGoal.chestRotation : trunkGoal.pelvisRotation;
+      out.target = LimbRoot(def_.skeleton, rig_, trunkGoal, which) + frame * glm::mix(limb.from, limb.to, u);
+      out.endRotation = glm::normalize(frame * rotation);
+      break;
+    }
+  }
+  // Knees point forward of the pelvis, elbows backward of the chest; the
+  // style's swivel turns both planes outward (bow legs, elbows out).
+  const float side = IsLeft(which) ? 1.0f : -1.0f;
+  if (IsArm(which)) {
+    out.pole = trunkGoal.chestRotation * glm::normalize(glm::vec3(0.25f * side, -1.0f, -0.4f));
+  } else {
+    out.pole = trunkGoal.pelvisRotation * glm::vec3(0.0f, 0.0f, 1.0f);
+  }
+  out.swivel = -side * glm::radians(static_cast<float>(spec_.style.swivelDeg));
+}
+
+PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& reading) const {
+  const float e = Ease(s);
+  PoseGoal goal;
+  goal.pelvisPosition = glm::mix(move.from.pelvis, move.to.pelvis, e);
+  goal.pelvisRotation = glm::slerp(move.from.pelvisRotation, move.to.pelvisRotation, e);
+  goal.chestRotation = glm::slerp(move.from.chestRotation, move.to.chestRotation, Ease(std::min(1.0f, s * 1.25f)));
+
+  // Secondary (priority) layer: style on the head and chest that the primary
+  // targets below (CoM over the feet, contacts held) then absorb.
+  const float t = static_cast<float>(reading.time);
+  const float sway = static_cast<float>(spec_.style.sway);
+  if (sway > 0.0f && move.keepComOverFeet) {
+    goal.chestRotation = goal.chestRotation * glm::angleAxis(0.12f * sway * std::sin(1.7f * t), glm::vec3(0, 0, 1));
+  }
+  const float look = static_cast<float>(spec_.style.lookAround);
+  // With the chest pitched forward the neck extends, so the face looks ahead
+  // and the head stays clear of the ground.
+  const float chestPitch = std::asin(std::clamp(glm::dot(goal.chestRotation * kUp, kUp), -1.0f, 1.0f));
+  const float extension = std::clamp(0.6f * (0.5f * kPi - chestPitch), 0.0f, 0.8f);
+  goal.headRotation = goal.chestRotation * glm::angleAxis(-extension, glm::vec3(1, 0, 0)) *
+                      glm::angleAxis(0.6f * look * std::sin(0.9f * t), glm::vec3(0, 1, 0));
+
+  for (int i = 0; i < kLimbCount; ++i) EvaluateLimb(move.limbs[i], static_cast<Limb>(i), s, goal, goal.limbs[i]);
+
+  if (move.keepComOverFeet && !reading.jointPositions.empty()) {
+    // Primary constraint of Phase 2: the whole-body CoM over the feet. The
+    // pelvis is slid along the ground until the pose's CoM is over the centre
+    // of the feet, plus the integral correction from the measured CoM.
+    const glm::vec3 centre = FeetCentre(reading) + balanceOffset_;
+    for (int iteration = 0; iteration < 3; ++iteration) {
+      glm::vec3 error = centre - PoseCom(goal);
+      error -= ground_.normal * glm::dot(error, ground_.normal);
+      goal.pelvisPosition += error;
+      for (int i = 0; i < kLimbCount; ++i) {
+        if (move.limbs[i].mode == LimbMode::kBody) EvaluateLimb(move.limbs[i], static_cast<Limb>(i), s, goal, goal.limbs[i]);
+      }
+    }
+  }
+  return goal;
+}
+
+// ---------------------------------------------------------------------------
+// Planning
+
+void RiseController::StartMove(Move move, const BodyReading& reading) {
+  move.duration /= std::max(0.25, spec_.style.speed) * (1.0 - 0.4 * spec_.style.tiredness);
+  move_ = std::move(move);
+  phase_ = move_.phase;
+  hasMove_ = true;
+  moveStart_ = reading.time;
+  progress_ = 0.0f;
+  for (int i = 0; i < kLimbCount; ++i) planted_[i] = move_.limbs[i].planted;
+}
+
+bool RiseController::Fallen(const BodyReading& r) const {
+  if (phase_ != RisePhase::kRise && phase_ != RisePhase::kStand) return false;
+  const glm::vec3 up = r.jointRotations[rig_.chest] * kUp;
+  const float pelvisHeight = Height(ground_, r.jointPositions[rig_.pelvis]);
+  return pelvisHeight < 0.25f * standPelvisHeight_ || glm::dot(up, kUp) < std::cos(glm::radians(70.0f));
+}
+
+void RiseController::PlanNext(const BodyReading& reading) {
+  switch (phase_) {
+    case RisePhase::kSettle:
+    case RisePhase::kRoll: StartMove(PlanRoll(reading), reading); break;
+    case RisePhase::kPlace: StartMove(PlanPush(reading), reading); break;
+    case RisePhase::kPush:
+    case RisePhase::kCrawl: StartMove(PlanCrawl(reading), reading); break;
+    case RisePhase::kRise: StartMove(PlanStand(reading), reading); break;
+    case RisePhase::kStand: StartMove(PlanStand(reading), reading); break;
+  }
+}
+
+RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
+  const glm::quat chest = r.jointRotations[rig_.chest];
+  const glm::vec3 face = chest * glm::vec3(0, 0, 1);
+  // Face down already: Phase 0 goes straight to placing hands and feet.
+  if (glm::dot(face, ground_.normal) < -0.7f) return PlanPlace(r);
+
+  const glm::vec3 forward = HeadingForward(r);
+  const glm::vec3 left = glm::normalize(glm::cross(kUp, forward));  // prone left
+  // Roll on toward the side the face already turns to; from flat on the back,
+  // the seed picks the side.
+  float sideSign = glm::dot(face, left);
+  if (std::fabs(sideSign) < 0.2f) sideSign = (rng_() & 1u) ? 1.0f : -1.0f;
+  const glm::vec3 rollSide = sideSign > 0.0f ? left : -left;
+
+  Move move;
+  move.name = "roll";
+  move.phase = RisePhase::kRoll;
+  move.duration = 1.6;
+  move.from = MeasuredTrunk(r);
+  move.to = move.from;
+  const float lyingHeight = Height(ground_, move.from.pelvis);
+  move.to.pelvis = Project(ground_, move.from.pelvis) + rollSide * 0.25f + ground_.normal * lyingHeight;
+  move.to.pelvisRotation = move.to.chestRotation = TrunkRotation(forward, 0.0f);
+
+  for (int i = 0; i < kLimbCount; ++i) {
+    const Limb limb = static_cast<Limb>(i);
+    const int root = rig_.upper[i];
+    // Which side of the body the limb is on, seen in the world right now.
+    const bool onRollSide = glm::dot(r.jointPositions[root] - r.jointPositions[rig_.pelvis], rollSide) > 0.0f;
+    LimbMove& m = move.limbs[i];
+    m.mode = LimbMode::kBody;
+    const glm::quat frame = IsArm(limb) ? r.jointRotations[rig_.chest] : r.jointRotations[rig_.pelvis];
+    m.from = glm::inverse(frame) * (r.jointPositions[rig_.end[i]] - r.jointPositions[root]);
+    m.fromRotation = glm::inverse(frame) * r.jointRotations[rig_.end[i]];
+    m.toRotation = glm::quat(1, 0, 0, 0);
+    if (IsArm(limb)) {
+      // The arm on the roll side goes overhead so the body rolls over the
+      // shoulder; the other reaches across the chest and pulls the body over.
+      m.to = onRollSide ? glm::vec3(0.0f, 0.92f * armReach_, 0.1f) : glm::vec3(0.0f, 0.15f, 0.85f) * armReach_;
+      m.span = 0.6f;
+    } else if (onRollSide) {
+      m.to = glm::vec3(0.0f, -0.98f * legReach_, 0.0f);
+    } else {
+      // The far leg bends and swings across: its weight tips the pelvis over.
+      const float across = IsLeft(limb) ? -1.0f : 1.0f;
+      m.to = glm::vec3(across * 0.25f, -0.6f * legReach_, 0.45f * legReach_);
+      m.lift = 0.0f;
+      m.span = 0.5f;
+    }
+  }
+  heading_ = forward;
+  return move;
+}
+
+RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
+  heading_ = HeadingForward(r);
+  const glm::vec3 left = glm::normalize(glm::cross(kUp, heading_));
+  Move move;
+  move.name = "place";
+  move.phase = RisePhase::kPlace;
+  move.duration = 1.0;
+  move.from = MeasuredTrunk(r);
+  move.to = move.from;
+  move.to.pelvisRotation = move.to.chestRotation = TrunkRotation(heading_, 0.0f);
+  PoseGoal trunk;
+  trunk.pelvisPosition = move.from.pelvis;
+  trunk.pelvisRotation = trunk.chestRotation = move.to.chestRotation;
+  for (int i = 0; i < 2; ++i) {
+    const Limb hand = static_cast<Limb>(i);
+    // The wrist beside the chest, under the shoulder and a little toward the
+    // hips: where a push-up starts (the palm lies outward of it).
+    const glm::vec3 shoulder = LimbRoot(def_.skeleton, rig_, trunk, hand);
+    LimbMove& m = move.limbs[i];
+    m = HoldLimb(r, hand, false);
+    m.toRotation = PlantedHandRotation(hand);
+    m.to = WristAbove(hand, Project(ground_, shoulder - heading_ * 0.04f), m.toRotation);
+    m.lift = static_cast<float>(spec_.style.stepHeightM);
+    m.delay = i == 0 ? 0.0f : 0.3f;
+    m.span = 0.7f;
+  }
+  for (int i = 2; i < 4; ++i) {
+    // Each foot steps to a wide crawl stance behind the hips and lands with its
+    // toes tucked under, standing on its toe edge.
+    const Limb foot = static_cast<Limb>(i);
+    const float side = IsLeft(foot) ? 1.0f : -1.0f;
+    const glm::vec3 hip = LimbRoot(def_.skeleton, rig_, trunk, foot);
+    const float hipHalf = std::fabs(glm::dot(hip - move.from.pelvis, left));
+    const float halfStance = std::max(0.5f * static_cast<float>(spec_.style.stanceWidthM), kCrawlHalfStance);
+    const glm::vec3 toe = Project(ground_, hip - heading_ * (0.9f * legReach_) + left * side * (halfStance - hipHalf));
+    LimbMove& m = move.limbs[i];
+    m = HoldLimb(r, foot, false);
+    m.toRotation = FootRotation(heading_, glm::radians(80.0f));
+    m.to = AnkleForToe(toe, m.toRotation);
+    m.lift = static_cast<float>(spec_.style.stepHeightM);
+    m.delay = i == 2 ? 0.0f : 0.3f;
+    m.span = 0.7f;
+  }
+  return move;
+}
+
+RiseController::Move RiseController::PlanPush(const BodyReading& r) {
+  Move move;
+  move.name = "push";
+  move.phase = RisePhase::kPush;
+  move.duration = 1.4;
+  move.from = MeasuredTrunk(r);
+  for (int i = 0; i < 2; ++i) move.limbs[i] = HoldLimb(r, static_cast<Limb>(i), true);
+  glm::vec3 ankles(0.0f);
+  for (int i = 2; i < 4; ++i) {
+    const int foot = rig_.end[i];
+    LimbMove& m = move.limbs[i];
+    m.mode = LimbMode::kToePivot;
+    m.from = m.to = Project(ground_, r.jointPositions[foot] + r.jointRotations[foot] * toeLocal_);
+    m.fromRotation = r.jointRotations[foot];
+    m.toRotation = FootRotation(heading_, glm::radians(60.0f));
+    m.planted = true;
+    ankles += AnkleForToe(m.to, m.toRotation);
+  }
+  ankles *= 0.5f;
+  // Up onto hands and feet: the CoM rises to the crawl height a third of the
+  // way from the hands to the feet, the trunk pitched so the arms stay nearly
+  // straight (the "bear" stance the crawl starts from).
+  const glm::vec3 wrists = 0.5f * (move.limbs[0].to + move.limbs[1].to);
+  const glm::vec3 comGoal = Project(ground_, glm::mix(wrists, ankles, 0.35f)) + ground_.normal * crawlComHeight_;
+  move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach);
+  freeHand_ = (rng_() & 1u) ? Limb::kHandLeft : Limb::kHandRight;
+  freeHandLifted_ = false;
+  crawlSteps_ = 0;
+  return move;
+}
+
+RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
+  const glm::vec3 left = glm::normalize(glm::cross(kUp, heading_));
+  const SupportPolygon feet = FeetRegion(r);
+  const bool overFeet = !feet.Empty() && feet.SignedDistance(Ground(r.com)) < -0.02f;
+  if (overFeet || crawlSteps_ >= kMaxCrawlSteps) return PlanRise(r);
+
+  Move move;
+  move.phase = RisePhase::kCrawl;
+  move.from = MeasuredTrunk(r);
+  move.to = move.from;
+  const Limb support = OtherHand(freeHand_);
+  move.limbs[static_cast<int>(support)] = HoldLimb(r, support, true);
+  for (int i = 2; i < 4; ++i) {
+    const int foot = rig_.end[i];
+    LimbMove& m = move.limbs[i];
+    m.mode = LimbMode::kToePivot;
+    m.from = m.to = Project(ground_, r.jointPositions[foot] + r.jointRotations[foot] * toeLocal_);
+    m.fromRotation = m.toRotation = r.jointRotations[foot];
+    m.planted = true;
+  }
+
+  if (!freeHandLifted_) {
+    // Iteration of Phase 1: the free hand is released, the CoM shifts toward
+    // the feet inside the support triangle of both feet and the support hand.
+    PointMassPlan plan;
+    plan.com = r.com;
+    plan.footLeft = r.jointPositions[rig_.end[2]];
+    plan.footRight = r.jointPositions[rig_.end[3]];
+    plan.feetRegion = feet;
+    plan.supportHand = r.jointPositions[rig_.end[static_cast<int>(support)]];
+    plan.leg = {0.6f * legReach_, legReach_ + 0.1f};
+    plan.arm = {0.6f * armReach_, armReach_ + 0.35f};
+    plan.minHeight = 0.35f * standComHeight_;
+    // Hips high while the feet are far (a pike), lower into a squat as the CoM nears them.
+    const float farFromFeet = std::clamp(feet.SignedDistance(Ground(r.com)) / 0.5f, 0.0f, 1.0f);
+    plan.preferredHeight = glm::mix(kSquatComRatio * standComHeight_, crawlComHeight_, farFromFeet);
+    plan.maxStep = 0.18f;
+    plan.Solve();
+    // The free hand stays down while the CoM moves into the triangle; it only
+    // lets go in the reach that follows, once balance no longer needs it.
+    move.limbs[static_cast<int>(freeHand_)] = HoldLimb(r, freeHand_, true);
+    // Heels come down as the pelvis moves back over the feet: the toe pivot
+    // aims for the flattest foot the ankle allows.
+    const float toFeet = glm::length(Ground(plan.target) - feet.Centroid());
+    const float heelLift = std::clamp(glm::radians(60.0f) * (toFeet - 0.15f) / 0.6f, 0.0f, glm::radians(60.0f));
+    for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, heelLift);
+    move.to = TrunkForCom(plan.target, heading_, move.from, move.limbs, kSupportArmReach);
+    move.name = "shift";
+    move.duration = std::clamp(glm::length(plan.target - r.com) / 0.15f, 0.6f, 2.0f);
+    freeHandLifted_ = true;
+  } else {
+    // The free hand goes beside the body toward the CoM and becomes the
+    // support hand. The arms hang from the shoulders, not from the model's
+    // point mass, so "beside the CoM" is taken as one step toward it, never
+    // closer than the hands are in a squat with the CoM over the feet.
+    const float side = IsLeft(freeHand_) ? 1.0f : -1.0f;
+    const glm::vec3 supportPalm = Project(ground_, r.jointPositions[rig_.end[static_cast<int>(support)]]);
+    const glm::vec3 feetCentre = FeetCentre(r);
+    const float supportAhead = glm::dot(supportPalm - feetCentre, heading_);
+    const float ahead = std::max(kSquatHandsAhead, supportAhead - kHandStep);
+    const glm::vec3 wristSpot = Project(ground_, feetCentre + heading_ * ahead + left * side * shoulderHalfWidth_);
+    LimbMove& free = move.limbs[static_cast<int>(freeHand_)];
+    free = HoldLimb(r, freeHand_, false);
+    free.toRotation = PlantedHandRotation(freeHand_);
+    free.to = WristAbove(freeHand_, wristSpot, free.toRotation);
+    free.lift = static_cast<float>(spec_.style.stepHeightM);
+    move.name = "reach";
+    move.duration = 0.8;
+    freeHandLifted_ = false;
+    freeHand_ = support;
+    ++crawlSteps_;
+  }
+  return move;
+}
+
+RiseController::Move RiseController::PlanRise(const BodyReading& r) {
+  Move move;
+  move.name = "rise";
+  move.phase = RisePhase::kRise;
+  move.duration = 2.6;
+  move.keepComOverFeet = true;
+  move.from = MeasuredTrunk(r);
+  move.to.pelvisRotation = move.to.chestRotation = TrunkRotation(heading_, 0.5f * kPi);
+  move.to.pelvis = FeetCentre(r) + ground_.normal * standPelvisHeight_ * 0.985f;
+  for (int i = 0; i < 2; ++i) {
+    LimbMove& m = move.limbs[i];
+    const Limb hand = static_cast<Limb>(i);
+    const glm::quat chest = r.jointRotations[rig_.chest];
+    m.mode = LimbMode::kBody;
+    m.from = glm::inverse(chest) * (r.jointPositions[rig_.end[i]] - r.jointPositions[rig_.upper[i]]);
+    m.fromRotation = glm::inverse(chest) * r.jointRotations[rig_.end[i]];
+    m.to = def_.skeleton.BindPositions()[rig_.end[i]] - def_.skeleton.BindPositions()[rig_.upper[i]];
+    m.toRotation = glm::quat(1, 0, 0, 0);
+    m.span = 0.6f;
+    (void)hand;
+  }
+  for (int i = 2; i < 4; ++i) {
+    const int foot = rig_.end[i];
+    LimbMove& m = move.limbs[i];
+    m.mode = LimbMode::kToePivot;
+    m.from = m.to = Project(ground_, r.jointPositions[foot] + r.jointRotations[foot] * toeLocal_);
+    m.fromRotation = r.jointRotations[foot];
+    m.toRotation = FootRotation(heading_, 0.0f);
+    m.span = 0.5f;
+    m.planted = true;
+  }
+  balanceOffset_ = glm::vec3(0.0f);
+  return move;
+}
+
+RiseController::Move RiseController::PlanStand(const BodyReading& r) {
+  Move move = PlanRise(r);
+  move.name = "stand";
+  move.phase = RisePhase::kStand;
+  move.duration = 1.0;
+  for (int i = 0; i < 2; ++i) move.limbs[i].from = move.limbs[i].to, move.limbs[i].fromRotation = move.limbs[i].toRotation;
+  if (standTime_ < 0.0) standTime_ = r.time;
+  return move;
+}
+
+void RiseController::FeedForward(const BodyReading& r, std::vector<glm::vec3>& out) const {
+  const Skeleton& sk = def_.skeleton;
+  out.assign(sk.joints.size(), glm::vec3(0.0f));
+  // Only once the body is up on its hands and feet are the supports known;
+  // lying, the trunk rests on the ground and needs no help.
+  if (phase_ == RisePhase::kSettle || phase_ == RisePhase::kRoll || phase_ == RisePhase::kPlace || !hasMove_) return;
+
+  // Share the weight among planted, touching supports: the least-norm weights
+  // whose weighted centre is the CoM's ground projection, negatives dropped.
+  std::array<glm::vec3, kLimbCount> point{};
+  std::array<float, kLimbCount> share{};
+  std::vector<int> supports;
+  for (int i = 0; i < kLimbCount; ++i) {
+    if (!planted_[i] || !r.touching[i]) continue;
+    const int end = rig_.end[i];
+    // A soft wrist loads the heel of the hand; a foot presses at its sole's centre.
+    const glm::vec3 local = IsArm(static_cast<Limb>(i)) ? 0.3f * sk.joints[end].box.center : sk.joints[end].box.center;
+    point[i] = Project(ground_, r.jointPositions[end] + r.jointRotations[end] * local);
+    supports.push_back(i);
+  }
+  if (supports.empty()) return;
+  const glm::vec2 c = Ground(r.com);
+  for (int pass = 0; pass < 3; ++pass) {
+    // Solve A A^T y = b, w = A^T y with A = [1; x; z] over the supports.
+    glm::mat3 normal(0.0f);
+    for (int i : supports) {
+      const glm::vec3 a(1.0f, point[i].x, point[i].z);
+      normal += glm::outerProduct(a, a);
+    }
+    const float det = glm::determinant(normal);
+    bool clipped = false;
+    if (std::fabs(det) > 1e-8f) {
+      const glm::vec3 y = glm::inverse(normal) * glm::vec3(1.0f, c.x, c.y);
+      for (int i : supports) share[i] = glm::dot(y, glm::vec3(1.0f, point[i].x, point[i].z));
+    } else {
+      for (int i : supports) share[i] = 1.0f / static_cast<float>(supports.size());
+    }
+    for (size_t k = 0; k < supports.size();) {
+      if (share[supports[k]] < 0.0f) share[supports[k]] = 0.0f, supports.erase(supports.begin() + k), clipped = true;
+      else ++k;
+    }
+    if (!clipped || supports.empty()) break;
+  }
+  float total = 0.0f;
+  for (int i : supports) total += share[i];
+  if (total <= 0.0f) return;
+  const glm::vec3 gravity(0.0f, -9.81f, 0.0f);
+  std::array<glm::vec3, kLimbCount> force{};
+  for (int i : supports) force[i] = -gravity * (totalMass_ * share[i] / total);
+
+  for (int j = 1; j < sk.JointCount(); ++j) {
+    if (!sk.joints[j].hasBox) continue;
+    const glm::vec3 pivot = r.jointPositions[j];
+    glm::vec3 torque(0.0f);
+    for (int s : subtree_[j]) {
+      if (!sk.joints[s].hasBox) continue;
+      const glm::vec3 centre = r.jointPositions[s] + r.jointRotations[s] * sk.joints[s].box.center;
+      torque -= glm::cross(centre - pivot, gravity * def_.bones[s].massKg);
+      for (int i = 0; i < kLimbCount; ++i) {
+        if (rig_.end[i] == s && glm::length(force[i]) > 0.0f) torque -= glm::cross(point[i] - pivot, force[i]);
+      }
+    }
+    out[j] = torque;
+  }
+}
+
+// ---------------------------------------------------------------------------
+// The control step
+
+void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
+  RISE_ASSERT(static_cast<int>(reading.jointPositions.size()) == def_.skeleton.JointCount());
+  const double dt = hasMove_ || phase_ != RisePhase::kSettle ? reading.time - lastTime_ : 0.0;
+  lastTime_ = reading.time;
+
+  if (phase_ == RisePhase::kSettle && !hasMove_) {
+    // Hold whatever pose the body fell into until it has come to rest.
+    const bool still = reading.maxBodySpeed < kRestSpeed && reading.maxAngularSpeed < kRestSpin;
+    if (!still) restSince_ = -1.0;
+    else if (restSince_ < 0.0) restSince_ = reading.time;
+    if (restSince_ >= 0.0 && reading.time - restSince_ >= kRestHold) PlanNext(reading);
+  } else if (Fallen(reading) && retries_ < kMaxRetries) {
+    ++retries_;
+    hasMove_ = false;
+    phase_ = RisePhase::kSettle;
+    restSince_ = -1.0;
+    standTime_ = -1.0;
+  } else if (hasMove_) {
+    // Quasi-static pace: progress slows while the pelvis lags its goal.
+    const PoseGoal now = GoalAt(move_, progress_, reading);
+    const float lag = glm::length(now.pelvisPosition - reading.jointPositions[rig_.pelvis]);
+    const float gate = std::clamp((kGateStop - lag) / (kGateStop - kGateError), 0.15f, 1.0f);
+    progress_ = std::min(1.0f, progress_ + static_cast<float>(dt / move_.duration) * gate);
+    trace_.trackingError = lag;
+    if (lag < kGateStop) stalledSince_ = -1.0;
+    else if (stalledSince_ < 0.0) stalledSince_ = reading.time;
+    if (move_.keepComOverFeet) {
+      // Integral feedback on the measured CoM keeps the balance goal honest
+      // when the model's masses or the servos' sag differ from the plan.
+      glm::vec3 error = FeetCentre(reading) - reading.com;
+      error -= ground_.normal * glm::dot(error, ground_.normal);
+      balanceOffset_ += error * static_cast<float>(dt) * 1.5f;
+      const float limit = 0.08f;
+      if (glm::length(balanceOffset_) > limit) balanceOffset_ *= limit / glm::length(balanceOffset_);
+    }
+    const bool stalled = stalledSince_ >= 0.0 && reading.time - stalledSince_ > kStallTime;
+    if (stalled) {
+      // The body cannot follow this move: plan again from where it is.
+      stalledSince_ = -1.0;
+      PlanNext(reading);
+    } else if (progress_ >= 1.0f && lag < kGateStop) {
+      if (phase_ == RisePhase::kStand) {
+        finished_ = reading.time - standTime_ >= kStandHold && reading.maxBodySpeed < kRestSpeed;
+        if (!finished_) PlanNext(reading);
+      } else {
+        PlanNext(reading);
+      }
+    }
+  }
+
+  // The pose to track.
+  out.local.assign(def_.skeleton.joints.size(), glm::quat(1, 0, 0, 0));
+  out.gainScale.assign(def_.skeleton.joints.size(), 1.0f);
+  FeedForward(reading, out.feedForward);
+  if (!hasMove_) {
+    // Settling: servos hold the joints where they are, softly.
+    out.local = LocalRotations(def_.skeleton, reading.jointRotations);
+    std::fill(out.gainScale.begin(), out.gainScale.end(), 0.3f);
+  } else {
+    const PoseGoal goal = GoalAt(move_, progress_, reading);
+    const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
+    out.local = LocalRotations(def_.skeleton, pose.worldRotations);
+    for (int i = 0; i < 2; ++i) {
+      if (planted_[i]) out.gainScale[rig_.end[i]] = kPlantedWristGain;
+    }
+    trace_.comGoal = PoseCom(goal);
+    for (int i = 0; i < kLimbCount; ++i) trace_.limbTargets[i] = goal.limbs[i].target;
+  }
+
+  trace_.time = reading.time;
+  trace_.phase = phase_;
+  trace_.move = hasMove_ ? move_.name : "settle";
+  trace_.com = reading.com;
+  trace_.touching = reading.touching;
+  trace_.planted = planted_;
+  trace_.support = SupportRegion(reading);
+}
+
+}  // namespace rise

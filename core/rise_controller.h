@@ -1,0 +1,179 @@
+// SPDX-License-Identifier: MIT
+// The rise controller (Kenwright, "Real-Time Character Rise Motions"): reads the
+// simulated body, plans where the hands, feet and CoM go with the point-mass
+// model, maps the plan to a full-body pose by IK, and hands the pose to the PD
+// servos. It never moves the body itself; the servos' torques do.
+//
+// The plan is a chain of moves. Each move blends the trunk (pelvis position,
+// pelvis and chest orientation) from where the body *is* when the move starts
+// to a goal, while each hand and foot is held where it touches, swung along a
+// Bezier path to a new place, or carried with the trunk. A move is planned
+// from the measured state when the previous one ends, so errors and pushes
+// are corrected by the next plan (the paper's feedback loop); a move whose
+// tracking error grows is slowed down, and a fall sends the plan back to the
+// phase that can recover from it.
+//
+// Phases (names as written into the clip's metadata):
+//   settle  wait until the fallen body is at rest
+//   roll    Phase 0: roll onto the front (from the back, a side or any pose)
+//   place   Phase 0: hands beside the chest, toes tucked under
+//   push    Phase 0: push up onto hands and feet
+//   crawl   Phase 1: shift the CoM toward the feet; move the free hand beside
+//           the CoM; swap the support hand; repeat until the CoM is over the feet
+//   rise    Phase 2: release the hands, extend the legs, keep the CoM over the feet
+//   stand   upright, arms at the sides, still
+#pragma once
+
+#include "core/biped_def.h"
+#include "core/body_pose_ik.h"
+#include "core/body_reading.h"
+#include "core/rise_spec.h"
+#include "core/support_polygon.h"
+#include "physics/collide.h"
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace rise {
+
+enum class RisePhase { kSettle, kRoll, kPlace, kPush, kCrawl, kRise, kStand };
+const char* RisePhaseName(RisePhase phase);
+
+// One line of the debug trace, written per control step.
+struct TraceSample {
+  double time = 0.0;
+  RisePhase phase = RisePhase::kSettle;
+  std::string move;
+  glm::vec3 com{0.0f};
+  glm::vec3 comGoal{0.0f};
+  SupportPolygon support;
+  std::array<glm::vec3, kLimbCount> limbTargets{};
+  std::array<bool, kLimbCount> touching{};
+  std::array<bool, kLimbCount> planted{};
+  float trackingError = 0.0f;
+};
+
+class RiseController {
+ public:
+  RiseController(const BipedDef& def, const RiseSpec& spec);
+
+  // One control step: reads the body, writes the servo targets.
+  void Update(const BodyReading& reading, ServoTargets& out);
+
+  RisePhase Phase() const { return phase_; }
+  // True once the body has stood still, upright, long enough to end the clip.
+  bool Finished() const { return finished_; }
+  // Time the body first reached the stand phase and held it; < 0 before.
+  double StandTime() const { return standTime_; }
+  // Limbs the plan treats as planted supports right now.
+  const std::array<bool, kLimbCount>& Planted() const { return planted_; }
+  const TraceSample& LastTrace() const { return trace_; }
+  // How many times a fall sent the plan back to an earlier phase.
+  int Retries() const { return retries_; }
+
+ private:
+  struct TrunkPose {
+    glm::vec3 pelvis{0.0f};
+    glm::quat pelvisRotation{1.0f, 0.0f, 0.0f, 0.0f};
+    glm::quat chestRotation{1.0f, 0.0f, 0.0f, 0.0f};
+  };
+  enum class LimbMode { kWorld, kToePivot, kBody };
+  struct LimbMove {
+    LimbMode mode = LimbMode::kWorld;
+    glm::vec3 from{0.0f}, to{0.0f};  // wrist/ankle (kWorld), toe point (kToePivot), or in the trunk frame (kBody)
+    glm::quat fromRotation{1.0f, 0.0f, 0.0f, 0.0f}, toRotation{1.0f, 0.0f, 0.0f, 0.0f};
+    float lift = 0.0f;               // swing height; 0 keeps the path straight
+    float delay = 0.0f, span = 1.0f; // fraction of the move over which the limb travels
+    bool planted = false;            // a support contact during this move
+  };
+  struct Move {
+    std::string name;
+    RisePhase phase = RisePhase::kSettle;
+    double duration = 1.0;            // s at speed 1
+    TrunkPose from, to;
+    std::array<LimbMove, kLimbCount> limbs;
+    bool keepComOverFeet = false;     // re-centre the pelvis so the CoM stays over the feet
+  };
+
+  // Planning (each returns the next move from the measured state).
+  void PlanNext(const BodyReading& reading);
+  Move PlanRoll(const BodyReading& reading);
+  Move PlanPlace(const BodyReading& reading);
+  Move PlanPush(const BodyReading& reading);
+  Move PlanCrawl(const BodyReading& reading);
+  Move PlanRise(const BodyReading& reading);
+  Move PlanStand(const BodyReading& reading);
+
+  // Geometry of the measured body.
+  TrunkPose MeasuredTrunk(const BodyReading& reading) const;
+  LimbMove HoldLimb(const BodyReading& reading, Limb limb, bool planted) const;
+  glm::vec3 FeetCentre(const BodyReading& reading) const;
+  SupportPolygon FeetRegion(const BodyReading& reading) const;
+  SupportPolygon SupportRegion(const BodyReading& reading) const;
+  glm::vec3 HeadingForward(const BodyReading& reading) const;
+
+  // Placement helpers.
+  glm::quat TrunkRotation(const glm::vec3& forward, float pitch) const;
+  glm::quat FootRotation(const glm::vec3& forward, float heelLift) const;
+  glm::quat HandRotation(Limb hand, const glm::vec3& fingers) const;
+  glm::quat PlantedHandRotation(Limb hand) const;
+  // The wrist of a hand lying with `rotation` whose wrist is above groundPoint.
+  glm::vec3 WristAbove(Limb hand, const glm::vec3& groundPoint, const glm::quat& rotation) const;
+  glm::vec3 WristForPalm(Limb hand, const glm::vec3& palmPoint, const glm::quat& rotation) const;
+  glm::vec3 AnkleForToe(const glm::vec3& toePoint, const glm::quat& rotation) const;
+  // The trunk for a CoM goal: pitch so the shoulders sit within arm reach of the
+  // hands, then the pelvis moved until the whole-body CoM meets the goal.
+  TrunkPose TrunkForCom(const glm::vec3& comGoal, const glm::vec3& forward, const TrunkPose& start,
+                        const std::array<LimbMove, kLimbCount>& limbs, float handReachFraction) const;
+
+  // Evaluation of the current move at progress s in [0, 1].
+  PoseGoal GoalAt(const Move& move, float s, const BodyReading& reading) const;
+  glm::vec3 PoseCom(const PoseGoal& goal) const;
+  void EvaluateLimb(const LimbMove& limb, Limb which, float s, const PoseGoal& trunkGoal, LimbGoal& out) const;
+  void StartMove(Move move, const BodyReading& reading);
+  bool Fallen(const BodyReading& reading) const;
+  // Gravity compensation and support forces through the joints (Jacobian
+  // transpose): the torque each joint needs to hold its distal part and pass
+  // on the ground forces of the supports below it, with the body's weight
+  // shared among the planted supports so their centre of pressure is under
+  // the CoM. Internal torques only: nothing pushes the body from outside.
+  void FeedForward(const BodyReading& reading, std::vector<glm::vec3>& out) const;
+
+  const BipedDef& def_;
+  RiseSpec spec_;
+  BodyRig rig_;
+  std::vector<std::vector<int>> subtree_;  // per skeleton joint: itself and every joint below it
+  physics::PlaneShape ground_;  // the terrain (core/biped.h GroundPlane)
+  std::mt19937 rng_;
+  float totalMass_ = 0.0f;
+  float armReach_ = 0.0f, legReach_ = 0.0f, standPelvisHeight_ = 0.0f;
+  float standComHeight_ = 0.0f, crawlComHeight_ = 0.0f, shoulderHalfWidth_ = 0.0f;
+  glm::vec3 toeLocal_{0.0f}, heelLocal_{0.0f};  // foot sole edges in the foot frame
+  float ankleDorsiflexionLimit_ = 0.5f;        // radians
+
+  RisePhase phase_ = RisePhase::kSettle;
+  Move move_;
+  bool hasMove_ = false;
+  double moveStart_ = 0.0;
+  float progress_ = 0.0f;
+  double lastTime_ = 0.0;
+  double restSince_ = -1.0;
+  double stalledSince_ = -1.0;
+  double standTime_ = -1.0;
+  bool finished_ = false;
+  int retries_ = 0;
+  int crawlSteps_ = 0;
+  Limb freeHand_ = Limb::kHandLeft;
+  bool freeHandLifted_ = false;
+  glm::vec3 heading_{0.0f, 0.0f, 1.0f};
+  glm::vec3 balanceOffset_{0.0f};
+  std::array<bool, kLimbCount> planted_{};
+  TraceSample trace_;
+};
+
+}  // namespace rise
