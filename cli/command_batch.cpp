@@ -100,12 +100,19 @@ int Run(const BatchArgs& args) {
 
 Command AddBatchCommand(CLI::App& app) {
   auto args = std::make_shared<BatchArgs>();
-  CLI::App* sub = app.add_subcommand(
-      "batch",
-      "Generate a clip library from a manifest (clips and/or a cross product of start postures x bodies x styles x "
-      "seeds) in parallel, and write outdir/index.json: per clip its files, resolved input, duration, time to "
-      "stand, quality figures and status. Clips whose files exist and match their input are skipped (resume). "
-      "Ctrl-C stops after the clips in flight; the index stays valid.");
+  CLI::App* sub = app.add_subcommand("batch", "Generate a clip library from a manifest, clips in parallel");
+  sub->footer(
+      "The manifest lists clips and/or a cross product of start postures x bodies x styles x seeds\n"
+      "(format: core/library_manifest.h, example: samples/library.json). Clips are named by start\n"
+      "category (back, stomach, side) and parameters, e.g. back_supine_tall_calm_s1.glb.\n"
+      "outdir/index.json lists per clip its files, full resolved input, duration, time to stand, the\n"
+      "quality figures of `check` and its status (ok, failed, error, pending); it is rewritten after\n"
+      "every clip, so Ctrl-C stops cleanly with it valid. A rerun skips clips whose files exist and\n"
+      "were made from the same input (resume). Results do not depend on --jobs.\n"
+      "Job arrays: run `--shard $SLURM_ARRAY_TASK_ID/N` (or $JOB_COMPLETION_INDEX) into one shared\n"
+      "folder, then the same command without --shard to write index.json (and --library-glb).\n"
+      "Exit codes: 0 every clip ok; 1 a clip failed or errored, or Ctrl-C; 2 bad manifest, option,\n"
+      "missing output folder or I/O error.\n");
   sub->add_option("manifest", args->manifest, "The library manifest (JSON; see samples/library.json)")->required();
   sub->add_option("-o,--output", args->outDir, "Output folder; it must exist")->required();
   sub->add_option("-j,--jobs", args->jobs, "Clips simulated at once (default: one per hardware thread)")

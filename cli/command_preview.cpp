@@ -60,10 +60,13 @@ int Run(const PreviewArgs& args) {
 
 Command AddPreviewCommand(CLI::App& app) {
   auto args = std::make_shared<PreviewArgs>();
-  CLI::App* sub = app.add_subcommand(
-      "preview",
-      "Draw a contact sheet (.png): key frames of the motion as boxes on a ground grid from a fixed three-quarter "
-      "camera, with time and phase under each frame. From an input file (simulated first) or a .glb/.gltf clip.");
+  CLI::App* sub = app.add_subcommand("preview", "Draw a contact sheet (.png) of a clip's key frames");
+  sub->footer(
+      "Key frames of the motion as boxes on a ground grid from a fixed three-quarter camera, with\n"
+      "time, frame and phase under each. From an input file (simulated first; the override options\n"
+      "apply) or a .glb/.gltf clip.\n"
+      "Example: rise-gen preview samples/side.json -o side.png\n"
+      "Exit codes: 0 written; 1 the simulation failed; 2 bad input or output path.\n");
   sub->add_option("input", args->input, "Input file (.json, simulated first) or clip (.glb/.gltf)")->required();
   sub->add_option("-o,--output", args->output, "The sheet to write (.png); the folder must exist")->required();
   sub->add_option("--frames", args->frames, "Key frames shown, first and last included (default 8)")

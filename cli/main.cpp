@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
       "  rise-gen samples/supine.json -o clip.glb -o clip.bvh\n"
       "Run `rise-gen <command> --help` for a command's options.\n"
       "Exit codes: 0 success; 1 a clip failed its quality bars (or a batch had failures);\n"
-      "2 bad input or I/O error (nothing written).");
+      "2 bad input or I/O error (nothing written).\n");
   const std::vector<Command> commands{AddGenerateCommand(app), AddBatchCommand(app), AddCheckCommand(app),
                                       AddPreviewCommand(app), AddSchemaCommand(app)};
   std::vector<std::string> args = WithDefaultCommand(argc, argv, app);

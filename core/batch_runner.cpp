@@ -93,7 +93,11 @@ void MeasureEntry(const ClipFiles& files, Ordered& entry) {
     return;
   }
   entry["status"] = check.passed ? "ok" : "failed";
-  if (!check.passed) entry["error"] = "a quality bar does not hold (see quality)";
+  if (!check.passed) {
+    std::string missed = MissedBars(check.quality);
+    if (!check.bvhOk) missed += std::string(missed.empty() ? "" : ", ") + "BVH vs glTF";
+    entry["error"] = "missed the quality bars: " + missed;
+  }
   entry["duration_s"] = check.quality.duration;
   entry["frames"] = check.quality.frames;
   entry["time_to_stand_s"] = check.clip.metadata.timeToStand;

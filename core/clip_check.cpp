@@ -25,6 +25,20 @@ QualityOptions QualityOptionsFor(const Clip& clip) {
   return options;
 }
 
+std::string MissedBars(const QualityReport& quality) {
+  if (!quality.error.empty()) return quality.error;
+  std::string text;
+  const std::pair<bool, const char*> bars[] = {{quality.startsLying, "starts lying"},
+                                               {quality.endsStanding, "ends standing"},
+                                               {quality.penetrationOk, "ground penetration"},
+                                               {quality.slipOk, "contact slip"},
+                                               {quality.jumpOk, "no teleport"}};
+  for (const auto& bar : bars) {
+    if (!bar.first) text += (text.empty() ? "" : ", ") + std::string(bar.second);
+  }
+  return text;
+}
+
 ClipCheck CheckClipFiles(const std::string& gltfPath, const std::string& bvhPath, const BvhFormat& bvhFormat) {
   ClipCheck check;
   check.error = ReadGltf(gltfPath, check.clip);

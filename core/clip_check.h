@@ -37,6 +37,9 @@ struct ClipCheck {
 // rise-gen clip); the level ground y = 0 for anyone else's clip.
 QualityOptions QualityOptionsFor(const Clip& clip);
 
+// The bars a report misses, by name, e.g. "ends standing, contact slip"; "" when it passes.
+std::string MissedBars(const QualityReport& quality);
+
 // Reads the glTF (.glb/.gltf) at gltfPath and, when bvhPath is not empty, the BVH at bvhPath
 // (assuming bvhFormat), and measures them.
 ClipCheck CheckClipFiles(const std::string& gltfPath, const std::string& bvhPath = "",

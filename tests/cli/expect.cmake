@@ -1,0 +1,61 @@
+# SPDX-License-Identifier: MIT
+# Runs one rise-gen command and checks what CTest alone cannot check together: its exit code,
+# and which files exist afterwards. Prints the command's stdout and stderr so the test's
+# PASS_REGULAR_EXPRESSION can assert the message; any failed expectation prints
+# RISE_EXPECT_FAILED, which the tests list as FAIL_REGULAR_EXPRESSION.
+#   -DCOMMAND=a|b|c     the command, arguments separated by |
+#   -DWORKDIR=dir       made empty first, then the working directory
+#   -DEXIT=n            expected exit code
+#   -DPRESENT=f|g       files (relative to WORKDIR) that must exist afterwards
+#   -DABSENT=f|g        files that must not exist afterwards (no partial output)
+#   -DSETUP=a|b         optional command run first in WORKDIR (e.g. to make a clip to check)
+#   -DEMPTY_STDOUT=1    stdout must be empty (-q)
+#   -DSTDOUT_FILE=f     stdout must equal this file byte for byte
+foreach(var COMMAND WORKDIR EXIT)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "RISE_EXPECT_FAILED: ${var} not given")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${WORKDIR})
+file(MAKE_DIRECTORY ${WORKDIR})
+if(DEFINED SETUP)
+  string(REPLACE "|" ";" setup "${SETUP}")
+  execute_process(COMMAND ${setup} WORKING_DIRECTORY ${WORKDIR} OUTPUT_QUIET ERROR_QUIET)
+endif()
+string(REPLACE "|" ";" command "${COMMAND}")
+execute_process(COMMAND ${command} WORKING_DIRECTORY ${WORKDIR}
+  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("stdout: ${out}")
+message("stderr: ${err}")
+set(problems "")
+if(NOT code STREQUAL EXIT)
+  string(APPEND problems "exit code ${code}, expected ${EXIT}; ")
+endif()
+if(DEFINED PRESENT)
+  string(REPLACE "|" ";" present "${PRESENT}")
+  foreach(f ${present})
+    if(NOT EXISTS ${WORKDIR}/${f})
+      string(APPEND problems "${f} missing; ")
+    endif()
+  endforeach()
+endif()
+if(DEFINED ABSENT)
+  string(REPLACE "|" ";" absent "${ABSENT}")
+  foreach(f ${absent})
+    if(EXISTS ${WORKDIR}/${f})
+      string(APPEND problems "${f} exists but must not; ")
+    endif()
+  endforeach()
+endif()
+if(EMPTY_STDOUT AND NOT out STREQUAL "")
+  string(APPEND problems "stdout not empty; ")
+endif()
+if(DEFINED STDOUT_FILE)
+  file(READ ${STDOUT_FILE} expected)
+  if(NOT out STREQUAL expected)
+    string(APPEND problems "stdout differs from ${STDOUT_FILE}; ")
+  endif()
+endif()
+if(problems)
+  message("RISE_EXPECT_FAILED: ${problems}")
+endif()
