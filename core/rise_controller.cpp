@@ -247,13 +247,14 @@ glm::vec3 RiseController::PoseCom(const PoseGoal& goal) const {
 RiseController::TrunkPose RiseController::TrunkForCom(const glm::vec3& comGoal, const glm::vec3& forward,
                                                       const TrunkPose& start,
                                                       const std::array<LimbMove, kLimbCount>& limbs,
-                                                      float handReachFraction) const {
+                                                      float handReachFraction,
+                                                      const std::array<bool, 2>& bearingHands) const {
   // Hands that support the trunk decide its pitch: the shoulders should sit
   // handReachFraction of the arm's reach from them (arms nearly straight).
   glm::vec3 hands(0.0f);
   int handCount = 0;
   for (int i = 0; i < 2; ++i) {
-    if (limbs[i].planted) hands += limbs[i].to, ++handCount;
+    if (bearingHands[i]) hands += limbs[i].to, ++handCount;
   }
   TrunkPose trunk = start;
   Move probe;
@@ -515,7 +516,7 @@ RiseController::Move RiseController::PlanPush(const BodyReading& r) {
   // straight (the "bear" stance the crawl starts from).
   const glm::vec3 wrists = 0.5f * (move.limbs[0].to + move.limbs[1].to);
   const glm::vec3 comGoal = Project(ground_, glm::mix(wrists, ankles, 0.35f)) + ground_.normal * crawlComHeight_;
-  move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach);
+  move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
   freeHand_ = (rng_() & 1u) ? Limb::kHandLeft : Limb::kHandRight;
   freeHandLifted_ = false;
   crawlSteps_ = 0;
@@ -568,7 +569,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     const float toFeet = glm::length(Ground(plan.target) - feet.Centroid());
     const float heelLift = std::clamp(glm::radians(60.0f) * (toFeet - 0.15f) / 0.6f, 0.0f, glm::radians(60.0f));
     for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, heelLift);
-    move.to = TrunkForCom(plan.target, heading_, move.from, move.limbs, kSupportArmReach);
+    move.to = TrunkForCom(plan.target, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
     move.name = "shift";
     move.duration = std::clamp(glm::length(plan.target - r.com) / 0.15f, 0.6f, 2.0f);
     freeHandLifted_ = true;

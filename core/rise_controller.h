@@ -127,9 +127,10 @@ class RiseController {
   glm::vec3 WristForPalm(Limb hand, const glm::vec3& palmPoint, const glm::quat& rotation) const;
   glm::vec3 AnkleForToe(const glm::vec3& toePoint, const glm::quat& rotation) const;
   // The trunk for a CoM goal: pitch so the shoulders sit within arm reach of the
-  // hands, then the pelvis moved until the whole-body CoM meets the goal.
+  // bearing hands, then the pelvis moved until the whole-body CoM meets the goal.
   TrunkPose TrunkForCom(const glm::vec3& comGoal, const glm::vec3& forward, const TrunkPose& start,
-                        const std::array<LimbMove, kLimbCount>& limbs, float handReachFraction) const;
+                        const std::array<LimbMove, kLimbCount>& limbs, float handReachFraction,
+                        const std::array<bool, 2>& bearingHands) const;
 
   // Evaluation of the current move at progress s in [0, 1].
   PoseGoal GoalAt(const Move& move, float s, const BodyReading& reading) const;
