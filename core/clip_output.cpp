@@ -87,7 +87,10 @@ std::string WriteClipFiles(const Clip& clip, const std::vector<std::string>& pat
 
 void RemoveOutputFiles(const std::vector<std::string>& files) {
   std::error_code ec;
-  for (const std::string& file : files) fs::remove(file, ec);
+  for (const std::string& file : files) {
+    // Only files: a folder that happens to carry an output's name is the user's, not ours.
+    if (fs::is_regular_file(file, ec)) fs::remove(file, ec);
+  }
 }
 
 PreviewOptions PreviewOptionsFor(const Clip& clip, const std::string& title) {

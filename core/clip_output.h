@@ -41,7 +41,7 @@ std::vector<std::string> ClipOutputFiles(const std::vector<std::string>& paths);
 // success, otherwise the first writer's message, with no file of this call left behind.
 std::string WriteClipFiles(const Clip& clip, const std::vector<std::string>& paths, const ClipOutputOptions& options);
 
-// Removes the files that exist among `files` (cleaning up after a failed write).
+// Removes the regular files that exist among `files` (cleaning up after a failed write).
 void RemoveOutputFiles(const std::vector<std::string>& files);
 
 // Contact-sheet options for a clip: the ground of its resolved input (a slope when it has one)
