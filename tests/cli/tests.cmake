@@ -143,3 +143,9 @@ rise_cli_test(preview_clip EXIT 0 REGEX "rise.glb -> sheet.png" ARGS preview ris
 rise_cli_test(preview_input EXIT 0 REGEX "side.json -> sheet.png" ARGS preview ${RISE_SAMPLES}/side.json -o sheet.png --max-duration 1
   PRESENT sheet.png ABSENT sheet.json)
 rise_cli_test(preview_bad EXIT 2 REGEX "nodir/sheet.png: folder 'nodir' does not exist" ARGS preview rise.glb -o nodir/sheet.png ${fixture})
+
+# Ctrl-C mid-batch on the 40-clip sample library.
+add_test(NAME cli.batch_interrupt COMMAND sh ${RISE_CLI_DIR}/interrupt.sh $<TARGET_FILE:rise-gen>
+  ${RISE_SAMPLES}/library.json ${RISE_CLI_WORK}/batch_interrupt ${CMAKE_COMMAND})
+set_tests_properties(cli.batch_interrupt PROPERTIES PASS_REGULAR_EXPRESSION "index valid: [0-9]+ finished, [0-9]+ pending"
+  FAIL_REGULAR_EXPRESSION "RISE_INTERRUPT_FAILED" LABELS cli)
