@@ -123,12 +123,8 @@ class ManifestReader {
     return true;
   }
 
-  // A value of a body range: a number, or {from, to, count} -> count numbers from `from` to `to`.
+  // A body range {from, to, count} -> count evenly spaced numbers from `from` to `to`.
   bool Range(const Json& value, const std::string& path, std::vector<double>& out) {
-    if (!value.is_object()) {
-      out = {value.is_number() ? value.get<double>() : 0.0};
-      return true;  // the loader checks the number itself
-    }
     if (!Keys(value, path, {"from", "to", "count"})) return false;
     double count = 0;
     for (const char* key : {"from", "to"}) {

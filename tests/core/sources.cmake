@@ -9,4 +9,6 @@ set(RISE_TEST_CORE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/test_body_pose_ik.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_clip_quality.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_library_manifest.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/test_batch_runner.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/test_batch_runner.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_spec_overrides.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_clip_check.cpp)

@@ -82,6 +82,9 @@ TEST_SUITE("batch_runner") {
     CHECK(fs::exists(fs::path(one.outDir) / "library_default.glb"));
     REQUIRE(a.index["libraries"].size() == 2);
     CHECK(a.index["libraries"][1]["clips"] == nlohmann::ordered_json{"back_supine_s1", "stomach_prone_s1"});
+    rise::Clip first;
+    CHECK(rise::ReadGltf((fs::path(one.outDir) / "library_default.glb").string(), first).empty());
+    CHECK(first.FrameCount() == 21);
   }
 
   TEST_CASE("an index entry holds the files, the full resolved input and the measured figures") {
