@@ -5,8 +5,8 @@
 // Prints CSV: jobs,clips,wall_s,cpu_s,wall_ms_per_clip,cpu_ms_per_clip,speedup,ok,failed
 // Usage: batch_bench [manifest] [jobs] [scratch folder]
 #include <chrono>
-#include <ctime>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <string>
 
@@ -28,8 +28,7 @@ rise::BatchReport Run(const rise::LibraryManifest& manifest, int jobs, const fs:
   options.jobs = jobs;
   const std::clock_t cpuStart = std::clock();
   const auto start = std::chrono::steady_clock::now();
-  rise::BatchReport report =
-      rise::RunBatch(manifest, rise::ShardClips(manifest.clips.size(), rise::Shard{}), options);
+  rise::BatchReport report = rise::RunBatch(manifest, rise::ShardClips(manifest.clips.size(), rise::Shard{}), options);
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   cpu = static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
   return report;

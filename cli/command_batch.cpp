@@ -64,8 +64,7 @@ int Run(const BatchArgs& args) {
   ProgressBar bar(args.quiet);
   options.onProgress = [&bar](const BatchProgress& p) {
     char text[96];
-    std::snprintf(text, sizeof text, "%d/%d clips, %d failed, %d up to date", p.finished, p.total, p.failed,
-                  p.skipped);
+    std::snprintf(text, sizeof text, "%d/%d clips, %d failed, %d up to date", p.finished, p.total, p.failed, p.skipped);
     bar.Draw(static_cast<double>(p.finished) / p.total, text);
   };
 

@@ -115,8 +115,7 @@ int Run(const GenerateArgs& args) {
 void AddOverrideOptions(CLI::App& command, SpecOverrides& overrides) {
   command.add_option("--fps", overrides.fps, "Frames per second of the clip, 1 to 240 (overrides fps)");
   command.add_option("--seed", overrides.seed, "Random seed, a whole number from 0 to 2^53 (overrides seed)");
-  command.add_option("--names", overrides.names,
-                     "Joint naming preset: default, mixamo or ue (overrides output.names)");
+  command.add_option("--names", overrides.names, "Joint naming preset: default, mixamo or ue (overrides output.names)");
   command.add_flag("--in-place", overrides.inPlace,
                    "Remove the travel over the ground from the clip (sets output.root_motion to false)");
   command.add_option("--max-duration", overrides.maxDurationS,
@@ -125,7 +124,8 @@ void AddOverrideOptions(CLI::App& command, SpecOverrides& overrides) {
 
 Command AddGenerateCommand(CLI::App& app) {
   auto args = std::make_shared<GenerateArgs>();
-  CLI::App* sub = app.add_subcommand("generate", "Simulate one clip from an input file and write it (the default command)");
+  CLI::App* sub =
+      app.add_subcommand("generate", "Simulate one clip from an input file and write it (the default command)");
   sub->footer(
       "Examples:\n"
       "  rise-gen samples/supine.json -o clip.glb\n"

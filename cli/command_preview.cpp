@@ -38,7 +38,9 @@ int Run(const PreviewArgs& args) {
     if (!spec) return ReportError(spec.Error());
     ProgressBar bar(args.quiet);
     GenerateSettings settings;
-    settings.onProgress = [&bar](double simulated, double maxDuration) { bar.Draw(simulated / maxDuration, "simulating"); };
+    settings.onProgress = [&bar](double simulated, double maxDuration) {
+      bar.Draw(simulated / maxDuration, "simulating");
+    };
     GeneratedClip generated = GenerateClip(spec.Value(), settings);
     bar.Clear();
     if (!generated.health.ok) {

@@ -10,7 +10,8 @@ namespace rise::cli {
 
 Command AddSchemaCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("schema", "Print the JSON Schema of the input file format");
-  sub->footer("The schema (draft 2020-12) is built into the binary. Example: rise-gen schema > rise-input.schema.json\n");
+  sub->footer(
+      "The schema (draft 2020-12) is built into the binary. Example: rise-gen schema > rise-input.schema.json\n");
   return {sub, []() {
             std::cout.write(reinterpret_cast<const char*>(kInputSchema), sizeof kInputSchema);
             return kExitOk;

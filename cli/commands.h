@@ -12,9 +12,9 @@
 namespace rise::cli {
 
 // Exit codes of every command (issue 6 section 2).
-constexpr int kExitOk = 0;          // success
-constexpr int kExitFailed = 1;      // a clip missed its quality bars, or a batch had failures
-constexpr int kExitBadInput = 2;    // bad input or an I/O error; nothing was written
+constexpr int kExitOk = 0;        // success
+constexpr int kExitFailed = 1;    // a clip missed its quality bars, or a batch had failures
+constexpr int kExitBadInput = 2;  // bad input or an I/O error; nothing was written
 
 struct Command {
   CLI::App* app;

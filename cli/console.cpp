@@ -25,7 +25,8 @@ void ProgressBar::Draw(double fraction, const std::string& text) {
   std::string bar(filled, '#');
   bar.append(kWidth - filled, '-');
   char eta[32] = "";
-  if (fraction > 0.0 && fraction < 1.0) std::snprintf(eta, sizeof eta, ", ETA %.0f s", elapsed * (1.0 / fraction - 1.0));
+  if (fraction > 0.0 && fraction < 1.0)
+    std::snprintf(eta, sizeof eta, ", ETA %.0f s", elapsed * (1.0 / fraction - 1.0));
   // \r and a clear-to-end-of-line keep the bar on one line as it shrinks and grows.
   std::fprintf(stderr, "\r[%s] %3.0f%% %s%s\033[K", bar.c_str(), 100.0 * fraction, text.c_str(), eta);
   std::fflush(stderr);

@@ -27,7 +27,8 @@ std::vector<std::string> WithDefaultCommand(int argc, char** argv, const CLI::Ap
 
 int main(int argc, char** argv) {
   using namespace rise::cli;
-  CLI::App app{"rise-gen " RISE_VERSION ": physically simulated get-up animation clips.\n"
+  CLI::App app{"rise-gen " RISE_VERSION
+               ": physically simulated get-up animation clips.\n"
                "A character lies on the ground; rise-gen simulates it getting up with its own joint\n"
                "torques and writes the motion as glTF 2.0 (.glb/.gltf) and/or BVH.",
                "rise-gen"};

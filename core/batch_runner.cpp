@@ -105,8 +105,7 @@ void MeasureEntry(const ClipFiles& files, Ordered& entry) {
 }
 
 // Generates (or finds) one clip and returns its complete index entry.
-Ordered RunClip(const LibraryManifest& manifest, const ManifestClip& clip, const BatchOptions& options,
-                bool& skipped) {
+Ordered RunClip(const LibraryManifest& manifest, const ManifestClip& clip, const BatchOptions& options, bool& skipped) {
   const ClipFiles files = FilesOf(manifest, clip, options);
   const std::string hash = InputHash(clip.spec);
   Ordered entry = EntryHead(manifest, clip, files, hash);
@@ -257,7 +256,8 @@ BatchReport RunBatch(const LibraryManifest& manifest, const std::vector<size_t>&
     }
   };
   const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-  const size_t jobs = std::min<size_t>(options.jobs > 0 ? options.jobs : hardware, std::max<size_t>(1, selection.size()));
+  const size_t jobs =
+      std::min<size_t>(options.jobs > 0 ? options.jobs : hardware, std::max<size_t>(1, selection.size()));
   std::vector<std::thread> pool;
   for (size_t t = 1; t < jobs; ++t) pool.emplace_back(worker);
   worker();

@@ -44,13 +44,13 @@ struct BatchProgress {
 };
 
 struct BatchOptions {
-  std::string outDir;                  // must exist
-  int jobs = 0;                        // worker threads; 0: one per hardware thread
-  bool libraryGlb = false;             // also write library_<body>.glb per body
-  bool previews = false;               // also write <clip>.png contact sheets
+  std::string outDir;       // must exist
+  int jobs = 0;             // worker threads; 0: one per hardware thread
+  bool libraryGlb = false;  // also write library_<body>.glb per body
+  bool previews = false;    // also write <clip>.png contact sheets
   std::string indexName = "index.json";
-  std::string manifestLabel;           // recorded in the index ("library.json")
-  std::string shardLabel;              // recorded in the index when not empty ("0/4")
+  std::string manifestLabel;                // recorded in the index ("library.json")
+  std::string shardLabel;                   // recorded in the index when not empty ("0/4")
   const std::atomic<bool>* stop = nullptr;  // when set: finish the clips in flight, start no more
   // Called after each finished clip, from the worker thread, one call at a time.
   std::function<void(const BatchProgress&)> onProgress;

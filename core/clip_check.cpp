@@ -102,8 +102,8 @@ std::string ClipCheck::Summary() const {
   if (hasBvh) {
     char line[200];
     if (bvhProblem.empty()) {
-      std::snprintf(line, sizeof line, "%s BVH vs glTF: %.4f m over %d joints (limit %.2f m)\n", bvhOk ? "PASS" : "FAIL",
-                    bvhDistance, bvhJoints, kMaxBvhDistance);
+      std::snprintf(line, sizeof line, "%s BVH vs glTF: %.4f m over %d joints (limit %.2f m)\n",
+                    bvhOk ? "PASS" : "FAIL", bvhDistance, bvhJoints, kMaxBvhDistance);
       text += line;
     } else {
       text += "FAIL BVH vs glTF: " + bvhProblem + "\n";

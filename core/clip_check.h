@@ -42,7 +42,6 @@ std::string MissedBars(const QualityReport& quality);
 
 // Reads the glTF (.glb/.gltf) at gltfPath and, when bvhPath is not empty, the BVH at bvhPath
 // (assuming bvhFormat), and measures them.
-ClipCheck CheckClipFiles(const std::string& gltfPath, const std::string& bvhPath = "",
-                         const BvhFormat& bvhFormat = {});
+ClipCheck CheckClipFiles(const std::string& gltfPath, const std::string& bvhPath = "", const BvhFormat& bvhFormat = {});
 
 }  // namespace rise

@@ -5,10 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <glm/gtc/quaternion.hpp>
 #include <map>
 #include <optional>
-
-#include <glm/gtc/quaternion.hpp>
 
 #include "core/input_json.h"
 #include "core/json_text.h"
@@ -86,8 +85,8 @@ class ManifestReader {
     }
     InputError e = result.Error();
     const std::string& p = e.jsonPath;
-    if (p.compare(0, inner.size(), inner) == 0 && (p.size() == inner.size() || p[inner.size()] == '.' ||
-                                                   p[inner.size()] == '[')) {
+    if (p.compare(0, inner.size(), inner) == 0 &&
+        (p.size() == inner.size() || p[inner.size()] == '.' || p[inner.size()] == '[')) {
       e.jsonPath = outer + p.substr(inner.size());
     }
     if (!error) error = e;
@@ -299,7 +298,8 @@ Result<LibraryManifest> ParseLibraryManifest(const std::string& text, const std:
     const Json& formats = root["formats"];
     const std::vector<std::string> allowed{"glb", "gltf", "bvh"};
     if (!formats.is_array() || formats.empty()) {
-      reader.Fail("formats", "found " + DescribeJsonValue(formats) + ", allowed: a non-empty array of " + Join(allowed));
+      reader.Fail("formats",
+                  "found " + DescribeJsonValue(formats) + ", allowed: a non-empty array of " + Join(allowed));
       return failed();
     }
     manifest.formats.clear();
@@ -320,8 +320,9 @@ Result<LibraryManifest> ParseLibraryManifest(const std::string& text, const std:
     const auto gltfCount = std::count(manifest.formats.begin(), manifest.formats.end(), "glb") +
                            std::count(manifest.formats.begin(), manifest.formats.end(), "gltf");
     if (gltfCount != 1) {
-      reader.Fail("formats", std::string(gltfCount == 0 ? "found no" : "found both") +
-                                 " \"glb\" and \"gltf\", allowed: exactly one of them (the index measures the glTF file)");
+      reader.Fail("formats",
+                  std::string(gltfCount == 0 ? "found no" : "found both") +
+                      " \"glb\" and \"gltf\", allowed: exactly one of them (the index measures the glTF file)");
       return failed();
     }
   }
@@ -375,8 +376,8 @@ Result<LibraryManifest> ParseLibraryManifest(const std::string& text, const std:
     // A missing axis is one entry that changes nothing and adds nothing to names.
     const std::vector<AxisEntry> none{{"", Json::object(), ""}};
     if (starts.empty()) starts = {{PostureName(defaults.start.posture), Json::object(), ""}};
-    const size_t count = starts.size() * (bodies.empty() ? 1 : bodies.size()) *
-                         (styles.empty() ? 1 : styles.size()) * (seeds.empty() ? 1 : seeds.size());
+    const size_t count = starts.size() * (bodies.empty() ? 1 : bodies.size()) * (styles.empty() ? 1 : styles.size()) *
+                         (seeds.empty() ? 1 : seeds.size());
     if (count + manifest.clips.size() > kMaxClips) {
       reader.Fail("cross", "found a cross product of " + std::to_string(count) + " clips, allowed: at most " +
                                std::to_string(kMaxClips));
@@ -429,8 +430,8 @@ Result<LibraryManifest> ParseLibraryManifest(const std::string& text, const std:
     };
     if (!body.second && skeletonOf(first.spec) != skeletonOf(clip.spec)) {
       reader.Fail(sources[i], "clip " + Quote(clip.name) + " of body " + Quote(clip.body) +
-                                  " has another character or output.names/root_motion than clip " +
-                                  Quote(first.name) + ", allowed: one skeleton per body name (give it its own body)");
+                                  " has another character or output.names/root_motion than clip " + Quote(first.name) +
+                                  ", allowed: one skeleton per body name (give it its own body)");
       return failed();
     }
   }

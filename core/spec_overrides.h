@@ -14,11 +14,11 @@
 namespace rise {
 
 struct SpecOverrides {
-  std::optional<double> fps;                // --fps          -> fps
-  std::optional<uint64_t> seed;             // --seed         -> seed
-  std::optional<std::string> names;         // --names        -> output.names
-  bool inPlace = false;                     // --in-place     -> output.root_motion = false
-  std::optional<double> maxDurationS;       // --max-duration -> max_duration_s
+  std::optional<double> fps;           // --fps          -> fps
+  std::optional<uint64_t> seed;        // --seed         -> seed
+  std::optional<std::string> names;    // --names        -> output.names
+  bool inPlace = false;                // --in-place     -> output.root_motion = false
+  std::optional<double> maxDurationS;  // --max-duration -> max_duration_s
 };
 
 // `spec` with the overrides applied, or the first one that is not allowed (InputError::file is

@@ -42,10 +42,10 @@ TEST_SUITE("library_manifest") {
         "styles": [ { "name": "calm", "speed": 0.8 } ],
         "seeds": [1, 2]
       } })");
-    CHECK(Names(manifest) == std::vector<std::string>{
-                                 "back_supine_avg_calm_s1", "back_supine_avg_calm_s2", "back_supine_big_calm_s1",
-                                 "back_supine_big_calm_s2", "stomach_turned_avg_calm_s1", "stomach_turned_avg_calm_s2",
-                                 "stomach_turned_big_calm_s1", "stomach_turned_big_calm_s2"});
+    CHECK(Names(manifest) == std::vector<std::string>{"back_supine_avg_calm_s1", "back_supine_avg_calm_s2",
+                                                      "back_supine_big_calm_s1", "back_supine_big_calm_s2",
+                                                      "stomach_turned_avg_calm_s1", "stomach_turned_avg_calm_s2",
+                                                      "stomach_turned_big_calm_s1", "stomach_turned_big_calm_s2"});
     const rise::ManifestClip& clip = manifest.clips[7];
     CHECK(clip.category == rise::StartCategory::kStomach);
     CHECK(clip.body == "big");
