@@ -36,7 +36,7 @@ constexpr int kMaxCrawlSteps = 16;
 // the hands rest in a squat with the CoM over the feet.
 constexpr float kHandStep = 0.25f;        // m
 constexpr float kSquatHandsAhead = 0.38f; // m
-constexpr float kSquatComRatio = 0.6f;
+constexpr float kSquatComRatio = 0.6f;     // CoM height in that squat, of the standing CoM height
 // Supporting arms are kept nearly straight (elbow ~15 deg), so the weight goes
 // down the bones instead of through the weak elbow and wrist servos.
 constexpr float kSupportArmReach = 0.985f;  // shoulder-to-wrist, of the arm's reach
@@ -44,7 +44,7 @@ constexpr float kSupportArmReach = 0.985f;  // shoulder-to-wrist, of the arm's r
 constexpr float kPlantedWristGain = 0.15f;
 // Feet at least this far either side of the midline in the crawl, so the
 // triangle of both feet and one hand contains the CoM with a small lean.
-constexpr float kCrawlHalfStance = 0.2f;  // m    // CoM height in that squat, of the standing CoM height
+constexpr float kCrawlHalfStance = 0.26f;  // m
 constexpr int kMaxRetries = 4;
 
 bool IsArm(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kHandRight; }
@@ -395,6 +395,15 @@ void RiseController::PlanNext(const BodyReading& reading) {
 RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   const glm::quat chest = r.jointRotations[rig_.chest];
   const glm::vec3 face = chest * glm::vec3(0, 0, 1);
+  // Crouched on both feet with the CoM over them: Phase 2 directly.
+  if (r.touching[2] && r.touching[3]) {
+    heading_ = SafeNormalize(Horizontal(r.jointRotations[rig_.pelvis] * glm::vec3(0, 0, 1)), heading_);
+    const SupportPolygon feet = FeetRegion(r);
+    if (Height(ground_, r.jointPositions[rig_.pelvis]) > 0.3f * standPelvisHeight_ &&
+        feet.SignedDistance(Ground(r.com)) < -0.02f) {
+      return PlanRise(r);
+    }
+  }
   // Face down already: Phase 0 goes straight to placing hands and feet.
   if (glm::dot(face, ground_.normal) < -0.7f) return PlanPlace(r);
 
@@ -583,7 +592,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     const glm::vec3 feetCentre = FeetCentre(r);
     const float supportAhead = glm::dot(supportPalm - feetCentre, heading_);
     const float ahead = std::max(kSquatHandsAhead, supportAhead - kHandStep);
-    const glm::vec3 wristSpot = Project(ground_, feetCentre + heading_ * ahead + left * side * shoulderHalfWidth_);
+    const glm::vec3 wristSpot = Project(ground_, feetCentre + heading_ * ahead + left * side * shoulderHalfWidth_ * 0.75f);
     LimbMove& free = move.limbs[static_cast<int>(freeHand_)];
     free = HoldLimb(r, freeHand_, false);
     free.toRotation = PlantedHandRotation(freeHand_);

@@ -170,7 +170,9 @@ struct MotorGains {
 };
 
 // PD motor part over `count` (1..3) world axes with errors c[i] (rad) measured about them.
-// The accumulated impulse is in axis coordinates; its norm is clamped to maxTorque h.
+// The accumulated impulse is in axis coordinates; the world torque it makes is clamped to
+// maxTorque h in norm (a universal joint's axes are not orthogonal once it bends, so clamping
+// the coordinates alone would let the torque exceed the cap).
 inline void SolveMotorPart(Body& a, Body& b, const glm::vec3* axes, const float* c, int count, const MotorGains& gains,
                            glm::vec3& accumulated, const SolverContext& context) {
   const float h = context.h;
@@ -195,7 +197,9 @@ inline void SolveMotorPart(Body& a, Body& b, const glm::vec3* axes, const float*
     for (int i = 0; i < count; ++i) target[i] = h * glm::dot(axes[i], gains.feedForward);
   }
   const float maxImpulse = gains.maxTorque * h;
-  const float norm = glm::length(target);
+  glm::vec3 worldTarget(0.0f);
+  for (int i = 0; i < count; ++i) worldTarget += target[i] * axes[i];
+  const float norm = glm::length(worldTarget);
   if (norm > maxImpulse) target *= maxImpulse / norm;
   glm::vec3 impulse(0.0f);
   for (int i = 0; i < count; ++i) impulse += (target[i] - accumulated[i]) * axes[i];
