@@ -112,12 +112,9 @@ int Run(const GenerateArgs& args) {
 
 }  // namespace
 
-void AddOverrideOptions(CLI::App& command, SpecOverrides& overrides) {
+void AddSimulationOptions(CLI::App& command, SpecOverrides& overrides) {
   command.add_option("--fps", overrides.fps, "Frames per second of the clip, 1 to 240 (overrides fps)");
   command.add_option("--seed", overrides.seed, "Random seed, a whole number from 0 to 2^53 (overrides seed)");
-  command.add_option("--names", overrides.names, "Joint naming preset: default, mixamo or ue (overrides output.names)");
-  command.add_flag("--in-place", overrides.inPlace,
-                   "Remove the travel over the ground from the clip (sets output.root_motion to false)");
   command.add_option("--max-duration", overrides.maxDurationS,
                      "Longest clip in seconds, 1 to 120; the simulation stops there (overrides max_duration_s)");
 }
@@ -139,7 +136,11 @@ Command AddGenerateCommand(CLI::App& app) {
                   "Output file, by extension: .glb or .gltf (glTF 2.0), .bvh. Repeat for several; each also gets "
                   "the metadata sidecar <stem>.json. The folder must exist.")
       ->required();
-  AddOverrideOptions(*sub, args->overrides);
+  AddSimulationOptions(*sub, args->overrides);
+  sub->add_option("--names", args->overrides.names,
+                  "Joint naming preset: default, mixamo or ue (overrides output.names)");
+  sub->add_flag("--in-place", args->overrides.inPlace,
+                "Remove the travel over the ground from the clip (sets output.root_motion to false)");
   sub->add_option("--root-motion", args->rootMotion,
                   "Where travel over the ground goes: bake (the pelvis moves), in-place (removed), extract (a ground "
                   "joint `root` carries it). Overrides output.root_motion")

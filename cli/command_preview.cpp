@@ -65,8 +65,8 @@ Command AddPreviewCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("preview", "Draw a contact sheet (.png) of a clip's key frames");
   sub->footer(
       "Key frames of the motion as boxes on a ground grid from a fixed three-quarter camera, with\n"
-      "time, frame and phase under each. From an input file (simulated first; the override options\n"
-      "apply) or a .glb/.gltf clip.\n"
+      "time, frame and phase under each. From an input file (simulated first; --fps, --seed and\n"
+      "--max-duration override its values) or a .glb/.gltf clip.\n"
       "Example: rise-gen preview samples/side.json -o side.png\n"
       "Exit codes: 0 written; 1 the simulation failed; 2 bad input or output path.\n");
   sub->add_option("input", args->input, "Input file (.json, simulated first) or clip (.glb/.gltf)")->required();
@@ -74,7 +74,7 @@ Command AddPreviewCommand(CLI::App& app) {
   sub->add_option("--frames", args->frames, "Key frames shown, first and last included (default 8)")
       ->check(CLI::Range(2, 64));
   sub->add_option("--columns", args->columns, "Frames per row (default 4)")->check(CLI::Range(1, 16));
-  AddOverrideOptions(*sub, args->overrides);
+  AddSimulationOptions(*sub, args->overrides);
   sub->add_flag("-q,--quiet", args->quiet, "Print nothing but errors");
   return {sub, [args]() { return Run(*args); }};
 }

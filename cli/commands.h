@@ -27,8 +27,8 @@ Command AddCheckCommand(CLI::App& app);
 Command AddPreviewCommand(CLI::App& app);
 Command AddSchemaCommand(CLI::App& app);
 
-// The input-file overrides shared by `generate` and `preview` (--fps --seed --names --in-place
+// The input-file overrides of the simulation, shared by `generate` and `preview` (--fps --seed
 // --max-duration).
-void AddOverrideOptions(CLI::App& command, SpecOverrides& overrides);
+void AddSimulationOptions(CLI::App& command, SpecOverrides& overrides);
 
 }  // namespace rise::cli
