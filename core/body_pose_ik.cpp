@@ -4,6 +4,11 @@
 #include "base/assert.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
 
 namespace rise {
 namespace {
@@ -27,7 +32,8 @@ const char* LimbName(Limb limb) {
   return kNames[static_cast<int>(limb)];
 }
 
-BodyRig BodyRig::FromSkeleton(const Skeleton& skeleton, float maxElbowFlexion, float maxKneeFlexion) {
+BodyRig BodyRig::FromDef(const BipedDef& def) {
+  const Skeleton& skeleton = def.skeleton;
   BodyRig rig;
   rig.pelvis = RequireJoint(skeleton, "pelvis");
   rig.abdomen = RequireJoint(skeleton, "abdomen");
@@ -36,13 +42,54 @@ BodyRig BodyRig::FromSkeleton(const Skeleton& skeleton, float maxElbowFlexion, f
   static const char* const kUpper[kLimbCount] = {"upper_arm_l", "upper_arm_r", "thigh_l", "thigh_r"};
   static const char* const kLower[kLimbCount] = {"forearm_l", "forearm_r", "shin_l", "shin_r"};
   static const char* const kEnd[kLimbCount] = {"hand_l", "hand_r", "foot_l", "foot_r"};
+  auto axis = [](const JointDof& dof) { return Axis{dof.axis, glm::radians(dof.minDeg), glm::radians(dof.maxDeg)}; };
   for (int i = 0; i < kLimbCount; ++i) {
     rig.upper[i] = RequireJoint(skeleton, kUpper[i]);
     rig.lower[i] = RequireJoint(skeleton, kLower[i]);
     rig.end[i] = RequireJoint(skeleton, kEnd[i]);
-    rig.maxFlexion[i] = i < 2 ? maxElbowFlexion : maxKneeFlexion;
+    const BoneDef& upper = def.bones[rig.upper[i]];
+    const BoneDef& lower = def.bones[rig.lower[i]];
+    const BoneDef& end = def.bones[rig.end[i]];
+    RISE_ASSERT(upper.dofs.size() == 2 && lower.dofs.size() == 1 && end.dofs.size() == 2);
+    rig.rootDofs[i] = {axis(upper.dofs[0]), axis(upper.dofs[1])};
+    rig.hinge[i] = axis(lower.dofs[0]);
+    rig.endDofs[i] = {axis(end.dofs[0]), axis(end.dofs[1])};
+    // The palm faces the thigh in the bind pose (-X on the left, +X on the right).
+    const bool left = i == 0;
+    rig.endKey[i] = IsArm(static_cast<Limb>(i)) ? glm::vec3(left ? -1.0f : 1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
   }
   return rig;
+}
+
+glm::vec2 SolveTwoAxes(const BodyRig::Axis& axis0, const BodyRig::Axis& axis1, const glm::vec3& v, const glm::vec3& t) {
+  const glm::vec3 a0 = axis0.axis, a1 = axis1.axis;
+  // Turning v about a1 by b must give it t's component along a0 (a rotation
+  // about a0 keeps that component): A cos b + B sin b = C.
+  const float A = glm::dot(v, a0) - glm::dot(v, a1) * glm::dot(a1, a0);
+  const float B = glm::dot(glm::cross(a1, v), a0);
+  const float C = glm::dot(t, a0);
+  const float radius = std::sqrt(A * A + B * B);
+  float b = 0.0f;
+  if (radius > 1e-6f) {
+    const float phase = std::atan2(B, A);
+    const float spread = std::acos(std::clamp(C / radius, -1.0f, 1.0f));
+    // Of the two solutions, the one nearer the joint's range (then the smaller turn).
+    const auto cost = [&](float angle) {
+      angle = std::remainder(angle, 2.0f * glm::pi<float>());
+      const float outside = std::max(0.0f, axis1.lower - angle) + std::max(0.0f, angle - axis1.upper);
+      return std::make_pair(outside, std::fabs(angle));
+    };
+    const float first = std::remainder(phase + spread, 2.0f * glm::pi<float>());
+    const float second = std::remainder(phase - spread, 2.0f * glm::pi<float>());
+    b = cost(first) <= cost(second) ? first : second;
+  }
+  b = std::clamp(b, axis1.lower, axis1.upper);
+  // Then the turn about a0 that carries the result onto t.
+  const glm::vec3 p = glm::angleAxis(b, a1) * v;
+  const glm::vec3 pp = p - a0 * glm::dot(p, a0), tp = t - a0 * glm::dot(t, a0);
+  float a = 0.0f;
+  if (glm::length(pp) > 1e-6f && glm::length(tp) > 1e-6f) a = std::atan2(glm::dot(a0, glm::cross(pp, tp)), glm::dot(pp, tp));
+  return {std::clamp(a, axis0.lower, axis0.upper), b};
 }
 
 glm::vec3 LimbRoot(const Skeleton& skeleton, const BodyRig& rig, const PoseGoal& goal, Limb limb) {
@@ -64,22 +111,35 @@ BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseG
   for (int i = 0; i < kLimbCount; ++i) {
     const Limb limb = static_cast<Limb>(i);
     const LimbGoal& limbGoal = goal.limbs[i];
-    TwoBoneIk ik;
-    ik.root = LimbRoot(skeleton, rig, goal, limb);
-    ik.target = limbGoal.target;
-    ik.pole = limbGoal.pole;
-    ik.swivel = limbGoal.swivel;
-    ik.upperLength = glm::length(skeleton.joints[rig.lower[i]].restOffset);
-    ik.lowerLength = glm::length(skeleton.joints[rig.end[i]].restOffset);
-    ik.maxFlexion = rig.maxFlexion[i];
-    ik.restBoneDirection = glm::normalize(skeleton.joints[rig.lower[i]].restOffset);
-    // Elbows bend backward, knees forward, in the standing rest pose.
-    ik.restPole = IsArm(limb) ? glm::vec3(0, 0, -1) : glm::vec3(0, 0, 1);
-    ik.Solve();
-    pose.worldRotations[rig.upper[i]] = ik.upperRotation;
-    pose.worldRotations[rig.lower[i]] = ik.lowerRotation;
-    pose.worldRotations[rig.end[i]] = limbGoal.endRotation;
-    pose.reached[i] = ik.reached;
+    const glm::quat parent = IsArm(limb) ? goal.chestRotation : goal.pelvisRotation;
+    const glm::vec3 upperBone = skeleton.joints[rig.lower[i]].restOffset;
+    const glm::vec3 lowerBone = skeleton.joints[rig.end[i]].restOffset;
+    const float l1 = glm::length(upperBone), l2 = glm::length(lowerBone);
+    const glm::vec3 reach = glm::inverse(parent) * (limbGoal.target - LimbRoot(skeleton, rig, goal, limb));
+    const float distance = glm::length(reach);
+
+    // Hinge from the distance; both bones point along -Y at rest, so the
+    // distance only depends on the hinge angle (law of cosines).
+    const BodyRig::Axis& hinge = rig.hinge[i];
+    const float cosHinge = (distance * distance - l1 * l1 - l2 * l2) / (2.0f * l1 * l2);
+    const float bend = std::clamp(std::acos(std::clamp(cosHinge, -1.0f, 1.0f)), hinge.lower, hinge.upper);
+    const glm::quat hingeRotation = glm::angleAxis(bend, hinge.axis);
+    const glm::vec3 limbVector = upperBone + hingeRotation * lowerBone;
+    const glm::vec3 toward = distance > 1e-6f ? reach / distance : glm::normalize(limbVector);
+    const glm::vec2 root = SolveTwoAxes(rig.rootDofs[i][0], rig.rootDofs[i][1], glm::normalize(limbVector), toward);
+    const glm::quat rootRotation =
+        glm::angleAxis(root.x, rig.rootDofs[i][0].axis) * glm::angleAxis(root.y, rig.rootDofs[i][1].axis);
+    pose.worldRotations[rig.upper[i]] = glm::normalize(parent * rootRotation);
+    pose.worldRotations[rig.lower[i]] = glm::normalize(pose.worldRotations[rig.upper[i]] * hingeRotation);
+
+    // The end: its key direction as the goal rotation has it, in the lower bone's frame.
+    const glm::quat lowerWorld = pose.worldRotations[rig.lower[i]];
+    const glm::vec3 wanted = glm::normalize(glm::inverse(lowerWorld) * (limbGoal.endRotation * rig.endKey[i]));
+    const glm::vec2 end = SolveTwoAxes(rig.endDofs[i][0], rig.endDofs[i][1], rig.endKey[i], wanted);
+    pose.worldRotations[rig.end[i]] = glm::normalize(
+        lowerWorld * glm::angleAxis(end.x, rig.endDofs[i][0].axis) * glm::angleAxis(end.y, rig.endDofs[i][1].axis));
+
+    pose.reached[i] = glm::length(rootRotation * limbVector - reach) < 1e-3f;
   }
 
   // End joints (no body of their own) follow their parent; then forward kinematics.

@@ -1,11 +1,21 @@
 // SPDX-License-Identifier: MIT
 // Whole-body pose from the plan's few numbers: the trunk (pelvis, chest, head)
 // orientations and pelvis position, plus a target for each wrist and ankle.
-// Knees and elbows come from the analytic two-bone IK; the abdomen takes half
-// the pelvis-to-chest rotation. The result is the pose the PD servos track.
+// The abdomen takes half the pelvis-to-chest rotation.
+//
+// Limbs are solved analytically in the body's own joint coordinates, so the
+// pose is one the servos can reach: hips and shoulders are 2-DOF (flexion,
+// abduction; no twist), knees and elbows 1-DOF hinges, ankles and wrists 2-DOF.
+// The hinge angle follows from the root-to-target distance (law of cosines,
+// clamped to the hinge's range); the two root angles then turn the limb onto
+// the target (each a closed-form solution of a rotation about a known axis).
+// With no twist DOF the bend plane is not free: it follows from the root's
+// two angles, which is why TwoBoneIk's pole/swivel is not used here. The end
+// (hand or foot) matches one key direction of the wanted end rotation -- the
+// palm's normal, the sole's normal -- which its 2 DOF can always do.
 #pragma once
 
-#include "core/two_bone_ik.h"
+#include "core/biped_def.h"
 #include "export/skeleton.h"
 
 #include <glm/gtc/quaternion.hpp>
@@ -22,9 +32,7 @@ const char* LimbName(Limb limb);  // "hand_l", "hand_r", "foot_l", "foot_r"
 
 struct LimbGoal {
   glm::vec3 target{0.0f};                           // wrist or ankle joint position, world
-  glm::quat endRotation{1.0f, 0.0f, 0.0f, 0.0f};    // hand or foot world rotation
-  glm::vec3 pole{0.0f, 0.0f, 1.0f};                 // elbow/knee direction hint, world
-  float swivel = 0.0f;                              // radians about shoulder/hip -> target
+  glm::quat endRotation{1.0f, 0.0f, 0.0f, 0.0f};    // hand or foot world rotation (its key direction counts)
 };
 
 struct PoseGoal {
@@ -35,16 +43,25 @@ struct PoseGoal {
   std::array<LimbGoal, kLimbCount> limbs;
 };
 
-// The joints of the character skeleton the IK works on, found once by name.
+// The joints of the character skeleton the IK works on, found once by name,
+// with the DOF axes (in the parent joint frame) and ranges of each limb joint.
 struct BodyRig {
+  struct Axis {
+    glm::vec3 axis{1.0f, 0.0f, 0.0f};
+    float lower = 0.0f, upper = 0.0f;  // radians
+  };
   int pelvis = -1, abdomen = -1, chest = -1, head = -1;
-  std::array<int, kLimbCount> upper{};  // upper_arm / thigh
-  std::array<int, kLimbCount> lower{};  // forearm / shin
-  std::array<int, kLimbCount> end{};    // hand / foot
-  std::array<float, kLimbCount> maxFlexion{};  // elbow / knee limit, radians
+  std::array<int, kLimbCount> upper{};  // upper_arm / thigh (2 DOF)
+  std::array<int, kLimbCount> lower{};  // forearm / shin (hinge)
+  std::array<int, kLimbCount> end{};    // hand / foot (2 DOF)
+  std::array<std::array<Axis, 2>, kLimbCount> rootDofs{};
+  std::array<Axis, kLimbCount> hinge{};
+  std::array<std::array<Axis, 2>, kLimbCount> endDofs{};
+  std::array<glm::vec3, kLimbCount> endKey{};  // hand: palm normal; foot: sole normal (up), end frame
 
-  // Finds the joints by their canonical names; asserts that they exist.
-  static BodyRig FromSkeleton(const Skeleton& skeleton, float maxElbowFlexion, float maxKneeFlexion);
+  // Finds the joints by their canonical names; asserts that they exist and
+  // that limbs are 2-DOF / hinge / 2-DOF as biped_def.h describes.
+  static BodyRig FromDef(const BipedDef& def);
 };
 
 struct BodyPose {
@@ -55,6 +72,10 @@ struct BodyPose {
 
 // Solves the pose; a pure function of its inputs.
 BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseGoal& goal);
+
+// The angles (a, b) with R(axis0, a) R(axis1, b) v closest to t (unit vectors;
+// axis0 perpendicular to axis1), each clamped to its range.
+glm::vec2 SolveTwoAxes(const BodyRig::Axis& axis0, const BodyRig::Axis& axis1, const glm::vec3& v, const glm::vec3& t);
 
 // World position of the shoulder or hip joint of `limb` for the given trunk.
 glm::vec3 LimbRoot(const Skeleton& skeleton, const BodyRig& rig, const PoseGoal& goal, Limb limb);

@@ -89,7 +89,7 @@ GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& setting
   biped.SetServosEnabled(true);
 
   RiseController controller(biped.Def(), spec);
-  const BodyRig rig = BodyRig::FromSkeleton(def.skeleton, 2.5f, 2.5f);
+  const BodyRig rig = BodyRig::FromDef(def);
   const int jointCount = def.skeleton.JointCount();
   const double dt = world.Settings().timeStep;
   const int maxSteps = static_cast<int>(std::ceil(spec.maxDurationS / dt));

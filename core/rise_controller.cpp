@@ -90,10 +90,7 @@ const char* RisePhaseName(RisePhase phase) {
 
 RiseController::RiseController(const BipedDef& def, const RiseSpec& spec)
     : def_(def), spec_(spec), ground_(GroundPlane(spec.terrain.slopeDeg)), rng_(static_cast<uint32_t>(spec.seed)) {
-  const int elbow = def.Find("forearm_l"), knee = def.Find("shin_l");
-  const float maxElbow = glm::radians(def.bones[elbow].dofs[0].maxDeg) - 0.05f;
-  const float maxKnee = glm::radians(def.bones[knee].dofs[0].maxDeg) - 0.05f;
-  rig_ = BodyRig::FromSkeleton(def.skeleton, maxElbow, maxKnee);
+  rig_ = BodyRig::FromDef(def);
   for (const BoneDef& bone : def.bones) totalMass_ += bone.massKg;
   const Skeleton& sk = def.skeleton;
   armReach_ = glm::length(sk.joints[rig_.lower[0]].restOffset) + glm::length(sk.joints[rig_.end[0]].restOffset);
@@ -308,15 +305,6 @@ void RiseController::EvaluateLimb(const LimbMove& limb, Limb which, float s, con
       break;
     }
   }
-  // Knees point forward of the pelvis, elbows backward of the chest; the
-  // style's swivel turns both planes outward (bow legs, elbows out).
-  const float side = IsLeft(which) ? 1.0f : -1.0f;
-  if (IsArm(which)) {
-    out.pole = trunkGoal.chestRotation * glm::normalize(glm::vec3(0.25f * side, -1.0f, -0.4f));
-  } else {
-    out.pole = trunkGoal.pelvisRotation * glm::vec3(0.0f, 0.0f, 1.0f);
-  }
-  out.swivel = -side * glm::radians(static_cast<float>(spec_.style.swivelDeg));
 }
 
 PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& reading) const {
