@@ -203,6 +203,7 @@ std::string TraceToJsonLines(const std::vector<TraceSample>& trace) {
     line["com"] = vec(sample.com);
     line["com_goal"] = vec(sample.comGoal);
     line["tracking_error"] = sample.trackingError;
+    line["feet_distance"] = sample.feetDistance;
     nlohmann::json support = nlohmann::json::array();
     for (const glm::vec2& p : sample.support.hull) support.push_back({p.x, p.y});
     line["support"] = support;

@@ -46,6 +46,9 @@ constexpr float kPlantedWristGain = 0.15f;
 // triangle of both feet and one hand contains the CoM with a small lean.
 constexpr float kCrawlHalfStance = 0.26f;  // m
 constexpr int kMaxRetries = 4;
+// Phase 2 starts once the CoM's ground projection is this close to the feet's
+// soles (negative: inside); the rise's balance loop centres it from there.
+constexpr float kRiseTriggerDistance = 0.02f;  // m
 
 bool IsArm(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kHandRight; }
 bool IsLeft(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kFootLeft; }
@@ -362,9 +365,14 @@ void RiseController::StartMove(Move move, const BodyReading& reading) {
 }
 
 bool RiseController::Fallen(const BodyReading& r) const {
+  const float pelvisHeight = Height(ground_, r.jointPositions[rig_.pelvis]);
+  if (phase_ == RisePhase::kCrawl) {
+    // Down on the ground again (sitting or lying) with the hands and feet no longer bearing.
+    const int bearing = static_cast<int>(std::count(r.touching.begin(), r.touching.end(), true));
+    return pelvisHeight < 0.22f * standPelvisHeight_ && bearing < 3;
+  }
   if (phase_ != RisePhase::kRise && phase_ != RisePhase::kStand) return false;
   const glm::vec3 up = r.jointRotations[rig_.chest] * kUp;
-  const float pelvisHeight = Height(ground_, r.jointPositions[rig_.pelvis]);
   return pelvisHeight < 0.25f * standPelvisHeight_ || glm::dot(up, kUp) < std::cos(glm::radians(70.0f));
 }
 
@@ -523,7 +531,7 @@ RiseController::Move RiseController::PlanPush(const BodyReading& r) {
 RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   const glm::vec3 left = glm::normalize(glm::cross(kUp, heading_));
   const SupportPolygon feet = FeetRegion(r);
-  const bool overFeet = !feet.Empty() && feet.SignedDistance(Ground(r.com)) < -0.02f;
+  const bool overFeet = !feet.Empty() && feet.SignedDistance(Ground(r.com)) < kRiseTriggerDistance;
   if (overFeet || crawlSteps_ >= kMaxCrawlSteps) return PlanRise(r);
 
   Move move;
@@ -785,6 +793,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
   trace_.touching = reading.touching;
   trace_.planted = planted_;
   trace_.support = SupportRegion(reading);
+  trace_.feetDistance = FeetRegion(reading).SignedDistance(Ground(reading.com));
 }
 
 }  // namespace rise

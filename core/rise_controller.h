@@ -52,6 +52,7 @@ struct TraceSample {
   glm::vec3 com{0.0f};
   glm::vec3 comGoal{0.0f};
   SupportPolygon support;
+  float feetDistance = 0.0f;  // CoM ground projection to the feet's soles, m (negative inside)
   std::array<glm::vec3, kLimbCount> limbTargets{};
   std::array<bool, kLimbCount> touching{};
   std::array<bool, kLimbCount> planted{};
