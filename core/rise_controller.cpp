@@ -565,6 +565,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     const float farFromFeet = std::clamp(feet.SignedDistance(Ground(r.com)) / 0.5f, 0.0f, 1.0f);
     plan.preferredHeight = glm::mix(kSquatComRatio * standComHeight_, crawlComHeight_, farFromFeet);
     plan.maxStep = 0.18f;
+    plan.balanceMargin = 0.01f;
     plan.Solve();
     // The free hand stays down while the CoM moves into the triangle; it only
     // lets go in the reach that follows, once balance no longer needs it.
