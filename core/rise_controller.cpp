@@ -136,6 +136,17 @@ RiseController::LimbMove RiseController::HoldLimb(const BodyReading& r, Limb lim
   return hold;
 }
 
+RiseController::LimbMove RiseController::ToePivot(const BodyReading& r, Limb foot, float heelLift) const {
+  const int end = rig_.end[static_cast<int>(foot)];
+  LimbMove pivot;
+  pivot.mode = LimbMode::kToePivot;
+  pivot.from = pivot.to = Project(ground_, r.jointPositions[end] + r.jointRotations[end] * toeLocal_);
+  pivot.fromRotation = r.jointRotations[end];
+  pivot.toRotation = FootRotation(heading_, heelLift);
+  pivot.planted = true;
+  return pivot;
+}
+
 glm::vec3 RiseController::FeetCentre(const BodyReading& r) const {
   glm::vec3 sum(0.0f);
   for (int i = 2; i < 4; ++i) {
@@ -506,13 +517,7 @@ RiseController::Move RiseController::PlanPush(const BodyReading& r) {
   for (int i = 0; i < 2; ++i) move.limbs[i] = HoldLimb(r, static_cast<Limb>(i), true);
   glm::vec3 ankles(0.0f);
   for (int i = 2; i < 4; ++i) {
-    const int foot = rig_.end[i];
-    LimbMove& m = move.limbs[i];
-    m.mode = LimbMode::kToePivot;
-    m.from = m.to = Project(ground_, r.jointPositions[foot] + r.jointRotations[foot] * toeLocal_);
-    m.fromRotation = r.jointRotations[foot];
-    m.toRotation = FootRotation(heading_, glm::radians(60.0f));
-    m.planted = true;
+    LimbMove& m = move.limbs[i] = ToePivot(r, static_cast<Limb>(i), glm::radians(60.0f));
     ankles += AnkleForToe(m.to, m.toRotation);
   }
   ankles *= 0.5f;
@@ -541,12 +546,8 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   const Limb support = OtherHand(freeHand_);
   move.limbs[static_cast<int>(support)] = HoldLimb(r, support, true);
   for (int i = 2; i < 4; ++i) {
-    const int foot = rig_.end[i];
-    LimbMove& m = move.limbs[i];
-    m.mode = LimbMode::kToePivot;
-    m.from = m.to = Project(ground_, r.jointPositions[foot] + r.jointRotations[foot] * toeLocal_);
-    m.fromRotation = m.toRotation = r.jointRotations[foot];
-    m.planted = true;
+    move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
+    move.limbs[i].toRotation = move.limbs[i].fromRotation;  // feet hold; the shift below picks their heel lift
   }
 
   if (!freeHandLifted_) {
@@ -626,14 +627,8 @@ RiseController::Move RiseController::PlanRise(const BodyReading& r) {
     (void)hand;
   }
   for (int i = 2; i < 4; ++i) {
-    const int foot = rig_.end[i];
-    LimbMove& m = move.limbs[i];
-    m.mode = LimbMode::kToePivot;
-    m.from = m.to = Project(ground_, r.jointPositions[foot] + r.jointRotations[foot] * toeLocal_);
-    m.fromRotation = r.jointRotations[foot];
-    m.toRotation = FootRotation(heading_, 0.0f);
-    m.span = 0.5f;
-    m.planted = true;
+    move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
+    move.limbs[i].span = 0.5f;
   }
   balanceOffset_ = glm::vec3(0.0f);
   return move;

@@ -113,6 +113,8 @@ class RiseController {
   // Geometry of the measured body.
   TrunkPose MeasuredTrunk(const BodyReading& reading) const;
   LimbMove HoldLimb(const BodyReading& reading, Limb limb, bool planted) const;
+  // A planted foot turning about its toe edge, where it is, to the given heel lift.
+  LimbMove ToePivot(const BodyReading& reading, Limb foot, float heelLift) const;
   glm::vec3 FeetCentre(const BodyReading& reading) const;
   SupportPolygon FeetRegion(const BodyReading& reading) const;
   SupportPolygon SupportRegion(const BodyReading& reading) const;
