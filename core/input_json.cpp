@@ -2,15 +2,14 @@
 // The JSON input loader and writer; see input_json.h for the rules.
 #include "core/input_json.h"
 
+#include "core/json_text.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <functional>
 #include <optional>
 #include <set>
-#include <sstream>
 
 namespace rise {
 namespace {
@@ -46,45 +45,11 @@ std::string JoinNames(const std::vector<std::string>& names) {
   return text;
 }
 
-// How a found value is shown in a message: strings quoted, numbers as written, containers by kind.
-std::string Describe(const Json& value) {
-  switch (value.type()) {
-    case Json::value_t::string:
-      return Quote(value.get<std::string>()) + " (a string)";
-    case Json::value_t::boolean:
-      return value.get<bool>() ? "true (a boolean)" : "false (a boolean)";
-    case Json::value_t::null:
-      return "null";
-    case Json::value_t::object:
-      return "an object";
-    case Json::value_t::array:
-      return "an array of " + std::to_string(value.size());
-    case Json::value_t::number_float:
-      return FormatNumber(value.get<double>());
-    default:
-      return value.dump();
-  }
-}
-
 std::string JoinPath(const std::string& path, const std::string& key) {
   return path.empty() ? key : path + "." + key;
 }
 std::string IndexPath(const std::string& path, size_t index) {
   return path + "[" + std::to_string(index) + "]";
-}
-
-// The closest name by edit distance, or empty when none is close enough to be a likely typo.
-std::string Closest(const std::string& name, const std::vector<std::string>& candidates) {
-  std::string best;
-  int bestDistance = std::max(2, static_cast<int>(name.size()) / 3) + 1;
-  for (const std::string& candidate : candidates) {
-    const int d = EditDistance(name, candidate);
-    if (d < bestDistance) {
-      bestDistance = d;
-      best = candidate;
-    }
-  }
-  return best;
 }
 
 // People name joints after the joint ("knee"), rise-gen after the bone it moves ("shin").
@@ -146,11 +111,11 @@ class Reader {
 
   // `value` must be an object whose keys are all in `allowed`.
   bool Object(const Json& value, const std::string& path, const std::vector<std::string>& allowed) {
-    if (!value.is_object()) return Fail(path, "found " + Describe(value) + ", allowed: an object");
+    if (!value.is_object()) return Fail(path, "found " + DescribeJsonValue(value) + ", allowed: an object");
     for (auto it = value.begin(); it != value.end(); ++it) {
       if (std::find(allowed.begin(), allowed.end(), it.key()) != allowed.end()) continue;
       std::string message = "unknown key " + Quote(it.key());
-      const std::string guess = Closest(it.key(), allowed);
+      const std::string guess = ClosestName(it.key(), allowed);
       if (!guess.empty()) message += ", did you mean " + Quote(guess) + "?";
       return Fail(JoinPath(path, it.key()), message + " allowed: " + JoinNames(allowed));
     }
@@ -166,7 +131,7 @@ class Reader {
 
   bool Number(const Json& value, const std::string& path, const Range& range, double& out) {
     if (!value.is_number()) {
-      return Fail(path, "found " + Describe(value) + ", allowed: a number from " + RangeText(range));
+      return Fail(path, "found " + DescribeJsonValue(value) + ", allowed: a number from " + RangeText(range));
     }
     const double x = value.get<double>();
     if (!std::isfinite(x) || x < range.lo || x > range.hi) {
@@ -187,7 +152,7 @@ class Reader {
     if (it == object.end()) return true;
     const std::string at = JoinPath(path, key);
     const std::string allowed = "a whole number from 0 to " + FormatNumber(hi);
-    if (!it->is_number()) return Fail(at, "found " + Describe(*it) + ", allowed: " + allowed);
+    if (!it->is_number()) return Fail(at, "found " + DescribeJsonValue(*it) + ", allowed: " + allowed);
     const double x = it->get<double>();
     if (!std::isfinite(x) || x < 0.0 || x > hi || std::floor(x) != x) {
       return Fail(at, "found " + (it->is_number_float() ? FormatNumber(x) : it->dump()) + ", allowed: " + allowed);
@@ -199,7 +164,7 @@ class Reader {
   bool OptionalBool(const Json& object, const std::string& path, const char* key, bool& out) {
     const auto it = object.find(key);
     if (it == object.end()) return true;
-    if (!it->is_boolean()) return Fail(JoinPath(path, key), "found " + Describe(*it) + ", allowed: true or false");
+    if (!it->is_boolean()) return Fail(JoinPath(path, key), "found " + DescribeJsonValue(*it) + ", allowed: true or false");
     out = it->get<bool>();
     return true;
   }
@@ -207,21 +172,21 @@ class Reader {
   // A string that must be one of `names`; returns its index in `index`.
   bool Choice(const Json& value, const std::string& path, const std::vector<std::string>& names, int& index) {
     const std::string allowed = "allowed: " + JoinNames(names);
-    if (!value.is_string()) return Fail(path, "found " + Describe(value) + ", " + allowed);
+    if (!value.is_string()) return Fail(path, "found " + DescribeJsonValue(value) + ", " + allowed);
     const std::string text = value.get<std::string>();
     const auto it = std::find(names.begin(), names.end(), text);
     if (it != names.end()) {
       index = static_cast<int>(it - names.begin());
       return true;
     }
-    const std::string guess = Closest(text, names);
+    const std::string guess = ClosestName(text, names);
     return Fail(
         path, "found " + Quote(text) + (guess.empty() ? "" : " (did you mean " + Quote(guess) + "?)") + ", " + allowed);
   }
 
   bool Vec3(const Json& value, const std::string& path, const Range& range, std::array<double, 3>& out) {
     if (!value.is_array() || value.size() != 3) {
-      return Fail(path, "found " + Describe(value) + ", allowed: an array of 3 numbers, each " + RangeText(range));
+      return Fail(path, "found " + DescribeJsonValue(value) + ", allowed: an array of 3 numbers, each " + RangeText(range));
     }
     for (size_t i = 0; i < 3; ++i) {
       if (!Number(value[i], IndexPath(path, i), range, out[i])) return false;
@@ -236,7 +201,7 @@ class Reader {
       return false;
     }
     if (root.contains("$schema") && !root["$schema"].is_string()) {
-      return Fail("$schema", "found " + Describe(root["$schema"]) + ", allowed: a string (the schema's URI)");
+      return Fail("$schema", "found " + DescribeJsonValue(root["$schema"]) + ", allowed: a string (the schema's URI)");
     }
     if (root.contains("character") && !Character(root["character"], "character", spec.character)) return false;
     if (root.contains("start") && !Start(root["start"], "start", spec.start)) return false;
@@ -318,7 +283,7 @@ class Reader {
   }
 
   bool JointsDeg(const Json& value, const std::string& path, StartSpec& out) {
-    if (!value.is_object()) return Fail(path, "found " + Describe(value) + ", allowed: an object");
+    if (!value.is_object()) return Fail(path, "found " + DescribeJsonValue(value) + ", allowed: an object");
     const BipedDef& def = ReferenceBody();
     const std::vector<std::string> names = PosedJointNames();
     for (auto it = value.begin(); it != value.end(); ++it) {
@@ -327,7 +292,7 @@ class Reader {
       if (joint < 0 || def.DofCount(joint) == 0) {
         std::string message = "unknown joint " + Quote(it.key());
         const std::string bone = BoneForJointWord(it.key());
-        std::string guess = def.Find(bone) >= 0 ? bone : Closest(it.key(), names);
+        std::string guess = def.Find(bone) >= 0 ? bone : ClosestName(it.key(), names);
         if (!bone.empty() && guess == bone) {
           message += "; joints are named after the bone they move: did you mean " + Quote(guess) + "?";
         } else if (!guess.empty()) {
@@ -338,7 +303,7 @@ class Reader {
       const int dofs = def.DofCount(joint);
       const std::string shape = std::to_string(dofs) + (dofs == 1 ? " value " : " values ") + DescribeDofs(def, joint);
       if (!it->is_array() || static_cast<int>(it->size()) != dofs) {
-        return Fail(at, "found " + Describe(*it) + ", allowed: an array of " + shape);
+        return Fail(at, "found " + DescribeJsonValue(*it) + ", allowed: an array of " + shape);
       }
       std::vector<double> angles(dofs);
       for (int i = 0; i < dofs; ++i) {
@@ -372,7 +337,7 @@ class Reader {
   }
 
   bool Disturbances(const Json& value, const std::string& path, RiseSpec& spec) {
-    if (!value.is_array()) return Fail(path, "found " + Describe(value) + ", allowed: an array of pushes");
+    if (!value.is_array()) return Fail(path, "found " + DescribeJsonValue(value) + ", allowed: an array of pushes");
     spec.disturbances.clear();
     const std::vector<std::string> keys = {"time_s", "body", "force_n", "duration_s"};
     for (size_t i = 0; i < value.size(); ++i) {
@@ -435,59 +400,6 @@ bool CheckConsistency(Reader& reader, const RiseSpec& spec) {
   return true;
 }
 
-// Finds the first key that appears twice in one object while the text is parsed;
-// nlohmann would otherwise keep the last value without a word.
-class DuplicateKeyFinder {
- public:
-  bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
-    switch (event) {
-      case Json::parse_event_t::object_start:
-        frames_.push_back({false, 0, {}, {}});
-        break;
-      case Json::parse_event_t::array_start:
-        frames_.push_back({true, 0, {}, {}});
-        break;
-      case Json::parse_event_t::key: {
-        Frame& frame = frames_.back();
-        frame.key = parsed.get<std::string>();
-        if (!frame.keys.insert(frame.key).second && duplicatePath.empty()) duplicatePath = Path();
-        break;
-      }
-      case Json::parse_event_t::object_end:
-      case Json::parse_event_t::array_end:
-        frames_.pop_back();
-        EndValue();
-        break;
-      case Json::parse_event_t::value:
-        EndValue();
-        break;
-    }
-    return true;
-  }
-
-  std::string duplicatePath;  // JSON path of the first repeated key, empty when none
-
- private:
-  struct Frame {
-    bool array;
-    size_t index;
-    std::set<std::string> keys;
-    std::string key;
-  };
-
-  void EndValue() {
-    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
-  }
-
-  std::string Path() const {
-    std::string path;
-    for (const Frame& frame : frames_) path = frame.array ? IndexPath(path, frame.index) : JoinPath(path, frame.key);
-    return path;
-  }
-
-  std::vector<Frame> frames_;
-};
-
 }  // namespace
 
 int EditDistance(const std::string& a, const std::string& b) {
@@ -527,49 +439,15 @@ Result<RiseSpec> RiseSpecFromJson(const Json& value, const std::string& fileName
 }
 
 Result<RiseSpec> ParseRiseSpec(const std::string& text, const std::string& fileName) {
-  DuplicateKeyFinder duplicates;
-  Json root;
-  try {
-    root = Json::parse(text, std::ref(duplicates));
-  } catch (const Json::parse_error& e) {
-    InputError error{fileName, "", "", 0, 0};
-    // e.byte is 1-based and points at the character that broke the syntax.
-    TextPosition(text, e.byte > 0 ? e.byte - 1 : 0, error.line, error.column);
-    // Drop nlohmann's "[json.exception.parse_error.101] parse error at line L, column C: " prefix:
-    // the position is already in the formatted error.
-    std::string what = e.what();
-    const size_t colon = what.find(": ");
-    error.message = "invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon + 2));
-    return error;
-  } catch (const Json::exception& e) {
-    // Number overflow (e.g. 1e400): nlohmann gives no position, so point at the literal.
-    InputError error{fileName, "", "", 0, 0};
-    const std::string what = e.what();
-    const size_t open = what.find('\''), close = what.rfind('\'');
-    if (open != std::string::npos && close > open) {
-      const std::string literal = what.substr(open + 1, close - open - 1);
-      const size_t at = text.find(literal);
-      if (at != std::string::npos) TextPosition(text, at, error.line, error.column);
-      error.message = "found the number " + literal + ", allowed: numbers a double can hold (about 1e308)";
-    } else {
-      error.message = "invalid JSON: " + what;
-    }
-    return error;
-  }
-  if (!duplicates.duplicatePath.empty()) {
-    return InputError{fileName, duplicates.duplicatePath, "found this key twice in the same object, allowed: once", 0,
-                      0};
-  }
-  return RiseSpecFromJson(root, fileName);
+  const Result<Json> root = ParseJsonText(text, fileName);
+  if (!root) return root.Error();
+  return RiseSpecFromJson(root.Value(), fileName);
 }
 
 Result<RiseSpec> LoadRiseSpec(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return InputError{path, "", "cannot open the file for reading", 0, 0};
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return InputError{path, "", "cannot read the file", 0, 0};
-  return ParseRiseSpec(text.str(), path);
+  const Result<std::string> text = ReadInputFile(path);
+  if (!text) return text.Error();
+  return ParseRiseSpec(text.Value(), path);
 }
 
 nlohmann::ordered_json RiseSpecToJson(const RiseSpec& spec) {
