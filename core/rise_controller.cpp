@@ -49,6 +49,11 @@ constexpr int kMaxRetries = 4;
 // Phase 2 starts once the CoM's ground projection is this close to the feet's
 // soles (negative: inside); the rise's balance loop centres it from there.
 constexpr float kRiseTriggerDistance = 0.02f;  // m
+// The feet walk in while they are farther than this behind the hips; a step is
+// at most kFootStep long and leans the CoM kFootStepMargin into its triangle first.
+constexpr float kFootWalkDistance = 0.2f;  // m
+constexpr float kFootStep = 0.3f;          // m
+constexpr float kFootStepMargin = 0.04f;   // m
 
 bool IsArm(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kHandRight; }
 bool IsLeft(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kFootLeft; }
@@ -538,6 +543,12 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   const SupportPolygon feet = FeetRegion(r);
   const bool overFeet = !feet.Empty() && feet.SignedDistance(Ground(r.com)) < kRiseTriggerDistance;
   if (overFeet || crawlSteps_ >= kMaxCrawlSteps) return PlanRise(r);
+  // Far from the feet, hand swaps would take many small steps: the feet walk
+  // in toward the hands first, each stepping while both hands and the other
+  // foot bear the body; the hands then take over as the paper's Phase 1 does.
+  if (footStepped_) return PlanFollow(r);
+  const float feetBehindHips = glm::dot(Project(ground_, r.jointPositions[rig_.pelvis]) - FeetCentre(r), heading_);
+  if (feetBehindHips > kFootWalkDistance || footLifted_) return PlanFootStep(r);
 
   Move move;
   move.phase = RisePhase::kCrawl;
@@ -602,6 +613,71 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     freeHand_ = support;
     ++crawlSteps_;
   }
+  return move;
+}
+
+RiseController::Move RiseController::PlanFootStep(const BodyReading& r) {
+  Move move;
+  move.phase = RisePhase::kCrawl;
+  move.from = move.to = MeasuredTrunk(r);
+  for (int i = 0; i < 2; ++i) move.limbs[i] = HoldLimb(r, static_cast<Limb>(i), true);
+  const Limb stance = freeFoot_ == Limb::kFootLeft ? Limb::kFootRight : Limb::kFootLeft;
+  move.limbs[static_cast<int>(stance)] = ToePivot(r, stance, 0.0f);
+  move.limbs[static_cast<int>(stance)].toRotation = move.limbs[static_cast<int>(stance)].fromRotation;
+  const int free = static_cast<int>(freeFoot_);
+  if (!footLifted_) {
+    // Into the triangle of both hands and the stance foot, at the crawl height.
+    move.limbs[free] = ToePivot(r, freeFoot_, 0.0f);
+    move.limbs[free].toRotation = move.limbs[free].fromRotation;
+    const SupportPolygon triangle = SupportPolygon::FromPoints(
+        {Ground(move.limbs[0].to), Ground(move.limbs[1].to), Ground(move.limbs[static_cast<int>(stance)].to)});
+    glm::vec2 goal = Ground(r.com);
+    const glm::vec2 centre = triangle.Centroid();
+    for (int k = 0; k < 20 && triangle.SignedDistance(goal) > -kFootStepMargin; ++k) goal += 0.1f * (centre - goal);
+    const glm::vec3 comGoal = Project(ground_, glm::vec3(goal.x, 0.0f, goal.y)) + ground_.normal * crawlComHeight_;
+    move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
+    move.name = "lean";
+    move.duration = 0.9;
+    footLifted_ = true;
+  } else {
+    // The free foot steps toward the hands, landing on its toes.
+    const int end = rig_.end[free];
+    const glm::vec3 toe = Project(ground_, r.jointPositions[end] + r.jointRotations[end] * toeLocal_);
+    const float gap = FeetRegion(r).SignedDistance(Ground(r.com));
+    LimbMove& m = move.limbs[free] = HoldLimb(r, freeFoot_, false);
+    m.toRotation = FootRotation(heading_, glm::radians(60.0f));
+    m.to = AnkleForToe(toe + heading_ * std::clamp(gap, 0.1f, kFootStep), m.toRotation);
+    m.lift = static_cast<float>(spec_.style.stepHeightM);
+    move.name = "step";
+    move.duration = 0.8;
+    footLifted_ = false;
+    footStepped_ = true;
+    freeFoot_ = stance;
+  }
+  return move;
+}
+
+RiseController::Move RiseController::PlanFollow(const BodyReading& r) {
+  // After a step, on all fours again, the CoM follows the feet by as much as
+  // they came in, so the gap between them closes.
+  Move move;
+  move.phase = RisePhase::kCrawl;
+  move.name = "follow";
+  move.duration = 0.9;
+  move.from = MeasuredTrunk(r);
+  for (int i = 0; i < 2; ++i) move.limbs[i] = HoldLimb(r, static_cast<Limb>(i), true);
+  for (int i = 2; i < 4; ++i) {
+    move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
+    move.limbs[i].toRotation = move.limbs[i].fromRotation;
+  }
+  const glm::vec3 feet = FeetCentre(r);
+  glm::vec3 back = feet - r.com;
+  back -= ground_.normal * glm::dot(back, ground_.normal);
+  const float gap = glm::length(back);
+  const glm::vec3 comGoal = Project(ground_, r.com + (gap > 1e-4f ? back / gap : back) * std::min(0.5f * kFootStep, gap)) +
+                            ground_.normal * crawlComHeight_;
+  move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
+  footStepped_ = false;
   return move;
 }
 

@@ -107,6 +107,8 @@ class RiseController {
   Move PlanPlace(const BodyReading& reading);
   Move PlanPush(const BodyReading& reading);
   Move PlanCrawl(const BodyReading& reading);
+  Move PlanFootStep(const BodyReading& reading);
+  Move PlanFollow(const BodyReading& reading);
   Move PlanRise(const BodyReading& reading);
   Move PlanStand(const BodyReading& reading);
 
@@ -174,6 +176,9 @@ class RiseController {
   int crawlSteps_ = 0;
   Limb freeHand_ = Limb::kHandLeft;
   bool freeHandLifted_ = false;
+  Limb freeFoot_ = Limb::kFootLeft;
+  bool footLifted_ = false;
+  bool footStepped_ = false;
   glm::vec3 heading_{0.0f, 0.0f, 1.0f};
   glm::vec3 balanceOffset_{0.0f};
   std::array<bool, kLimbCount> planted_{};
