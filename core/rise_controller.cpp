@@ -51,7 +51,7 @@ constexpr int kMaxRetries = 4;
 constexpr float kRiseTriggerDistance = 0.02f;  // m
 // The feet walk in while they are farther than this behind the hips; a step is
 // at most kFootStep long and leans the CoM kFootStepMargin into its triangle first.
-constexpr float kFootWalkDistance = 0.2f;  // m
+constexpr float kFootWalkDistance = 0.3f;  // m
 constexpr float kFootStep = 0.3f;          // m
 constexpr float kFootStepMargin = 0.04f;   // m
 
