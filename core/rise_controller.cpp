@@ -49,9 +49,10 @@ constexpr int kMaxRetries = 4;
 // Phase 2 starts once the CoM's ground projection is this close to the feet's
 // soles (negative: inside); the rise's balance loop centres it from there.
 constexpr float kRiseTriggerDistance = 0.02f;  // m
-// The feet walk in while they are farther than this behind the hips; a step is
-// at most kFootStep long and leans the CoM kFootStepMargin into its triangle first.
-constexpr float kFootWalkDistance = 0.3f;  // m
+// The feet walk in while they are farther than this behind the hands (a squat
+// with the hands down has them about this far apart); a step is at most
+// kFootStep long and leans the CoM kFootStepMargin into its triangle first.
+constexpr float kFootWalkDistance = 0.55f;  // m
 constexpr float kFootStep = 0.3f;          // m
 constexpr float kFootStepMargin = 0.04f;   // m
 
@@ -547,8 +548,10 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   // in toward the hands first, each stepping while both hands and the other
   // foot bear the body; the hands then take over as the paper's Phase 1 does.
   if (footStepped_) return PlanFollow(r);
-  const float feetBehindHips = glm::dot(Project(ground_, r.jointPositions[rig_.pelvis]) - FeetCentre(r), heading_);
-  if (feetBehindHips > kFootWalkDistance || footLifted_) return PlanFootStep(r);
+  const glm::vec3 hands = 0.5f * (r.jointPositions[rig_.end[0]] + r.jointPositions[rig_.end[1]]);
+  const float feetBehindHands = glm::dot(Project(ground_, hands) - FeetCentre(r), heading_);
+  if (feetBehindHands > kFootWalkDistance || footLifted_) return PlanFootStep(r);
+  if (!satBack_) return PlanSitBack(r);
 
   Move move;
   move.phase = RisePhase::kCrawl;
@@ -654,6 +657,22 @@ RiseController::Move RiseController::PlanFootStep(const BodyReading& r) {
     footStepped_ = true;
     freeFoot_ = stance;
   }
+  return move;
+}
+
+RiseController::Move RiseController::PlanSitBack(const BodyReading& r) {
+  // With the feet in close behind the hands, the CoM moves back over the feet
+  // into a squat on all four limbs, heels coming down, before a hand lets go.
+  Move move;
+  move.phase = RisePhase::kCrawl;
+  move.name = "sit back";
+  move.duration = 1.6;
+  move.from = MeasuredTrunk(r);
+  for (int i = 0; i < 2; ++i) move.limbs[i] = HoldLimb(r, static_cast<Limb>(i), true);
+  for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), glm::radians(15.0f));
+  const glm::vec3 comGoal = FeetCentre(r) + ground_.normal * (kSquatComRatio * standComHeight_);
+  move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
+  satBack_ = true;
   return move;
 }
 

@@ -109,6 +109,7 @@ class RiseController {
   Move PlanCrawl(const BodyReading& reading);
   Move PlanFootStep(const BodyReading& reading);
   Move PlanFollow(const BodyReading& reading);
+  Move PlanSitBack(const BodyReading& reading);
   Move PlanRise(const BodyReading& reading);
   Move PlanStand(const BodyReading& reading);
 
@@ -179,6 +180,7 @@ class RiseController {
   Limb freeFoot_ = Limb::kFootLeft;
   bool footLifted_ = false;
   bool footStepped_ = false;
+  bool satBack_ = false;
   glm::vec3 heading_{0.0f, 0.0f, 1.0f};
   glm::vec3 balanceOffset_{0.0f};
   std::array<bool, kLimbCount> planted_{};
