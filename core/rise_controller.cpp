@@ -660,16 +660,25 @@ RiseController::Move RiseController::PlanFootStep(const BodyReading& r) {
   return move;
 }
 
+RiseController::Move RiseController::OnAllFours(const BodyReading& r, const char* name, double duration) const {
+  Move move;
+  move.phase = RisePhase::kCrawl;
+  move.name = name;
+  move.duration = duration;
+  move.from = MeasuredTrunk(r);
+  for (int i = 0; i < 2; ++i) move.limbs[i] = HoldLimb(r, static_cast<Limb>(i), true);
+  for (int i = 2; i < 4; ++i) {
+    move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
+    move.limbs[i].toRotation = move.limbs[i].fromRotation;
+  }
+  return move;
+}
+
 RiseController::Move RiseController::PlanSitBack(const BodyReading& r) {
   // With the feet in close behind the hands, the CoM moves back over the feet
   // into a squat on all four limbs, heels coming down, before a hand lets go.
-  Move move;
-  move.phase = RisePhase::kCrawl;
-  move.name = "sit back";
-  move.duration = 1.6;
-  move.from = MeasuredTrunk(r);
-  for (int i = 0; i < 2; ++i) move.limbs[i] = HoldLimb(r, static_cast<Limb>(i), true);
-  for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), glm::radians(15.0f));
+  Move move = OnAllFours(r, "sit back", 1.6);
+  for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, glm::radians(15.0f));
   const glm::vec3 comGoal = FeetCentre(r) + ground_.normal * (kSquatComRatio * standComHeight_);
   move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
   satBack_ = true;
@@ -679,16 +688,7 @@ RiseController::Move RiseController::PlanSitBack(const BodyReading& r) {
 RiseController::Move RiseController::PlanFollow(const BodyReading& r) {
   // After a step, on all fours again, the CoM follows the feet by as much as
   // they came in, so the gap between them closes.
-  Move move;
-  move.phase = RisePhase::kCrawl;
-  move.name = "follow";
-  move.duration = 0.9;
-  move.from = MeasuredTrunk(r);
-  for (int i = 0; i < 2; ++i) move.limbs[i] = HoldLimb(r, static_cast<Limb>(i), true);
-  for (int i = 2; i < 4; ++i) {
-    move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
-    move.limbs[i].toRotation = move.limbs[i].fromRotation;
-  }
+  Move move = OnAllFours(r, "follow", 0.9);
   const glm::vec3 feet = FeetCentre(r);
   glm::vec3 back = feet - r.com;
   back -= ground_.normal * glm::dot(back, ground_.normal);

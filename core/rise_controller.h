@@ -110,6 +110,8 @@ class RiseController {
   Move PlanFootStep(const BodyReading& reading);
   Move PlanFollow(const BodyReading& reading);
   Move PlanSitBack(const BodyReading& reading);
+  // A move on both hands and both feet, all held where they are.
+  Move OnAllFours(const BodyReading& reading, const char* name, double duration) const;
   Move PlanRise(const BodyReading& reading);
   Move PlanStand(const BodyReading& reading);
 
