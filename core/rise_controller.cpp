@@ -429,14 +429,21 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   const glm::vec3 rollSide = sideSign > 0.0f ? left : -left;
 
   Move move;
-  move.name = "roll";
   move.phase = RisePhase::kRoll;
-  move.duration = 1.6;
   move.from = MeasuredTrunk(r);
   move.to = move.from;
-  const float lyingHeight = Height(ground_, move.from.pelvis);
-  move.to.pelvis = Project(ground_, move.from.pelvis) + rollSide * 0.25f + ground_.normal * lyingHeight;
-  move.to.pelvisRotation = move.to.chestRotation = TrunkRotation(forward, 0.0f);
+  if (rollTucked_) {
+    // The body turns over toward rollSide: the planted foot and the servos
+    // drive the trunk toward face down, shifted by about its own width.
+    move.name = "roll";
+    move.duration = 1.6;
+    const float lyingHeight = Height(ground_, move.from.pelvis);
+    move.to.pelvis = Project(ground_, move.from.pelvis) + rollSide * 0.25f + ground_.normal * lyingHeight;
+    move.to.pelvisRotation = move.to.chestRotation = TrunkRotation(forward, 0.0f);
+  } else {
+    move.name = "tuck";
+    move.duration = 0.9;
+  }
 
   for (int i = 0; i < kLimbCount; ++i) {
     const Limb limb = static_cast<Limb>(i);
@@ -444,6 +451,22 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
     // Which side of the body the limb is on, seen in the world right now.
     const bool onRollSide = glm::dot(r.jointPositions[root] - r.jointPositions[rig_.pelvis], rollSide) > 0.0f;
     LimbMove& m = move.limbs[i];
+    if (!IsArm(limb) && !onRollSide) {
+      // The far leg is the pusher: it plants its foot beside the buttock with
+      // the knee up (tuck), then holds it there while the hip pushes the
+      // pelvis over (roll).
+      if (rollTucked_) {
+        m = HoldLimb(r, limb, true);
+      } else {
+        const glm::vec3 hip = r.jointPositions[root];
+        const glm::vec3 toe = Project(ground_, hip - forward * (0.5f * legReach_) - rollSide * 0.06f);
+        m = HoldLimb(r, limb, false);
+        m.toRotation = FootRotation(-forward, 0.0f);
+        m.to = AnkleForToe(toe, m.toRotation);
+        m.lift = static_cast<float>(spec_.style.stepHeightM);
+      }
+      continue;
+    }
     m.mode = LimbMode::kBody;
     const glm::quat frame = IsArm(limb) ? r.jointRotations[rig_.chest] : r.jointRotations[rig_.pelvis];
     m.from = glm::inverse(frame) * (r.jointPositions[rig_.end[i]] - r.jointPositions[root]);
@@ -454,16 +477,11 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       // shoulder; the other reaches across the chest and pulls the body over.
       m.to = onRollSide ? glm::vec3(0.0f, 0.92f * armReach_, 0.1f) : glm::vec3(0.0f, 0.15f, 0.85f) * armReach_;
       m.span = 0.6f;
-    } else if (onRollSide) {
-      m.to = glm::vec3(0.0f, -0.98f * legReach_, 0.0f);
     } else {
-      // The far leg bends and swings across: its weight tips the pelvis over.
-      const float across = IsLeft(limb) ? -1.0f : 1.0f;
-      m.to = glm::vec3(across * 0.25f, -0.6f * legReach_, 0.45f * legReach_);
-      m.lift = 0.0f;
-      m.span = 0.5f;
+      m.to = glm::vec3(0.0f, -0.98f * legReach_, 0.0f);
     }
   }
+  rollTucked_ = !rollTucked_;
   heading_ = forward;
   return move;
 }

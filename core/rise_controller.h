@@ -183,6 +183,7 @@ class RiseController {
   bool footLifted_ = false;
   bool footStepped_ = false;
   bool satBack_ = false;
+  bool rollTucked_ = false;
   glm::vec3 heading_{0.0f, 0.0f, 1.0f};
   glm::vec3 balanceOffset_{0.0f};
   std::array<bool, kLimbCount> planted_{};
