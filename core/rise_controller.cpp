@@ -432,6 +432,8 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   move.phase = RisePhase::kRoll;
   move.from = MeasuredTrunk(r);
   move.to = move.from;
+  // Already on a side: no tuck, the roll carries on from there.
+  if (std::fabs(glm::dot(face, ground_.normal)) < 0.5f) rollTucked_ = true;
   if (rollTucked_) {
     // The body turns over toward rollSide: the planted foot and the servos
     // drive the trunk toward face down, shifted by about its own width.
