@@ -225,6 +225,14 @@ glm::quat RiseController::HandRotation(Limb hand, const glm::vec3& fingers) cons
   return FromAxes(x, -along);
 }
 
+float RiseController::HandSwingLift(Limb hand) const {
+  // The swing path is the wrist's; the hand hangs up to its own length below
+  // it in mid-swing, so the fingertips clear the ground only if the wrist
+  // rises that much more than the style's step height.
+  const BoneBox& box = def_.skeleton.joints[rig_.end[static_cast<int>(hand)]].box;
+  return static_cast<float>(spec_.style.stepHeightM) + 2.0f * box.halfExtents.y;
+}
+
 glm::quat RiseController::PlantedHandRotation(Limb hand) const {
   // The arm has no pronation (shoulder and wrist are 2-DOF, the elbow a hinge),
   // so a palm laid flat in front of the shoulder can only point its fingers
@@ -510,7 +518,7 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
     m = HoldLimb(r, hand, false);
     m.toRotation = PlantedHandRotation(hand);
     m.to = WristAbove(hand, Project(ground_, shoulder - heading_ * 0.04f), m.toRotation);
-    m.lift = static_cast<float>(spec_.style.stepHeightM);
+    m.lift = HandSwingLift(hand);
     m.delay = i == 0 ? 0.0f : 0.3f;
     m.span = 0.7f;
   }
@@ -629,7 +637,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     free = HoldLimb(r, freeHand_, false);
     free.toRotation = PlantedHandRotation(freeHand_);
     free.to = WristAbove(freeHand_, wristSpot, free.toRotation);
-    free.lift = static_cast<float>(spec_.style.stepHeightM);
+    free.lift = HandSwingLift(freeHand_);
     move.name = "reach";
     move.duration = 0.8;
     freeHandLifted_ = false;

@@ -130,6 +130,7 @@ class RiseController {
   glm::quat FootRotation(const glm::vec3& forward, float heelLift) const;
   glm::quat HandRotation(Limb hand, const glm::vec3& fingers) const;
   glm::quat PlantedHandRotation(Limb hand) const;
+  float HandSwingLift(Limb hand) const;
   // The wrist of a hand lying with `rotation` whose wrist is above groundPoint.
   glm::vec3 WristAbove(Limb hand, const glm::vec3& groundPoint, const glm::quat& rotation) const;
   glm::vec3 WristForPalm(Limb hand, const glm::vec3& palmPoint, const glm::quat& rotation) const;
