@@ -93,9 +93,9 @@ inline float LinearEffectiveMass(const Body& a, const Body& b, const glm::vec3& 
   return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
-// 1 / (J M^-1 J^T) for an angular row about axis.
-inline float AngularEffectiveMass(const Body& a, const Body& b, const glm::vec3& axis) {
-  const float k = glm::dot(axis, (a.invInertiaWorld + b.invInertiaWorld) * axis);
+// 1 / (J M^-1 J^T) for an angular row about axis; invInertiaSum = IA^-1 + IB^-1.
+inline float AngularEffectiveMass(const glm::mat3& invInertiaSum, const glm::vec3& axis) {
+  const float k = glm::dot(axis, invInertiaSum * axis);
   return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
@@ -103,7 +103,7 @@ inline float AngularEffectiveMass(const Body& a, const Body& b, const glm::vec3&
 //   Cdot = vB + wB x rB - vA - wA x rA
 //   K = (mA + mB) 1 - [rA]x IA^-1 [rA]x - [rB]x IB^-1 [rB]x
 // K^-1 is computed once per step (PointPartMass) from the step's starting pose, as contacts do;
-// C and Cdot use the anchors where the bodies are now.
+// C and Cdot use the lever arms rA, rB where the bodies are now.
 inline glm::mat3 PointPartMass(const Body& a, const Body& b, const glm::vec3& localAnchorA,
                                const glm::vec3& localAnchorB) {
   const glm::mat3 sA = SkewMatrix(a.transform.rotation * localAnchorA);
@@ -111,10 +111,8 @@ inline glm::mat3 PointPartMass(const Body& a, const Body& b, const glm::vec3& lo
   return glm::inverse(glm::mat3(a.invMass + b.invMass) - sA * a.invInertiaWorld * sA - sB * b.invInertiaWorld * sB);
 }
 
-inline void SolvePointPart(Body& a, Body& b, const glm::vec3& localAnchorA, const glm::vec3& localAnchorB,
-                           const glm::mat3& mass, glm::vec3& accumulated, const SolverContext& context, bool useBias) {
-  const glm::vec3 rA = a.transform.rotation * localAnchorA;
-  const glm::vec3 rB = b.transform.rotation * localAnchorB;
+inline void SolvePointPart(Body& a, Body& b, const glm::vec3& rA, const glm::vec3& rB, const glm::mat3& mass,
+                           glm::vec3& accumulated, const SolverContext& context, bool useBias) {
   const glm::vec3 cdot = PointVelocity(b, rB) - PointVelocity(a, rA);
   glm::vec3 bias(0.0f);
   Softness soft = kRigid;
@@ -128,13 +126,14 @@ inline void SolvePointPart(Body& a, Body& b, const glm::vec3& localAnchorA, cons
   ApplyLinearImpulse(a, b, rA, rB, impulse);
 }
 
-// Angular equality row: C = position (measured about axis) = 0, Cdot = axis . (wB - wA).
-inline void SolveAngularEquality(Body& a, Body& b, const glm::vec3& axis, float position, float& accumulated,
-                                 const SolverContext& context, bool useBias) {
+// Angular equality row: C = position (measured about axis) = 0, Cdot = axis . (wB - wA);
+// mass is the row's AngularEffectiveMass.
+inline void SolveAngularEquality(Body& a, Body& b, const glm::vec3& axis, float mass, float position,
+                                 float& accumulated, const SolverContext& context, bool useBias) {
   const float cdot = glm::dot(axis, b.angularVelocity - a.angularVelocity);
   const Softness soft = useBias ? context.jointSoftness : kRigid;
   const float bias = useBias ? soft.biasRate * position : 0.0f;
-  const float impulse = -soft.massScale * AngularEffectiveMass(a, b, axis) * (cdot + bias) - soft.impulseScale * accumulated;
+  const float impulse = -soft.massScale * mass * (cdot + bias) - soft.impulseScale * accumulated;
   accumulated += impulse;
   ApplyAngularImpulse(a, b, impulse * axis);
 }
@@ -142,8 +141,8 @@ inline void SolveAngularEquality(Body& a, Body& b, const glm::vec3& axis, float 
 // Angular inequality row: C = position >= 0 along axis, impulse >= 0. Always active: while the
 // limit is not reached the bias C/h lets the bodies close the gap in this sub-step but no further
 // (speculative, like contacts), so a fast limb cannot jump past its limit.
-inline void SolveAngularLimit(Body& a, Body& b, const glm::vec3& axis, float position, float& accumulated,
-                              const SolverContext& context, bool useBias) {
+inline void SolveAngularLimit(Body& a, Body& b, const glm::vec3& axis, float mass, float position,
+                              float& accumulated, const SolverContext& context, bool useBias) {
   float bias = 0.0f;
   Softness soft = kRigid;
   if (position > 0.0f) {
@@ -153,9 +152,9 @@ inline void SolveAngularLimit(Body& a, Body& b, const glm::vec3& axis, float pos
     bias = soft.biasRate * position;
   }
   const float cdot = glm::dot(axis, b.angularVelocity - a.angularVelocity);
-  // An idle row that would only pull is clamped to zero anyway: skip its effective mass.
+  // An idle row that would only pull is clamped to zero anyway.
   if (accumulated == 0.0f && cdot + bias >= 0.0f) return;
-  const float impulse = -soft.massScale * AngularEffectiveMass(a, b, axis) * (cdot + bias) - soft.impulseScale * accumulated;
+  const float impulse = -soft.massScale * mass * (cdot + bias) - soft.impulseScale * accumulated;
   const float newAccumulated = std::max(accumulated + impulse, 0.0f);
   ApplyAngularImpulse(a, b, (newAccumulated - accumulated) * axis);
   accumulated = newAccumulated;

@@ -8,8 +8,9 @@
 //   motor:  the rotation vector e of (qB frameB) conj(qA frameA target), projected on the free
 //           axes, c_i = u_i . e, Cdot_i = u_i . (wB - wA); solved as an implicit PD spring.
 // Solve order within a joint: motor, limits, locks, point, so the hard parts have the last word.
-// Angular rows are rebuilt from the current poses at every warm start and solve: the axes turn
-// during a step and the limits must see the angle the sub-step actually reached.
+// Angular rows, their effective masses, the motor error and the lever arms are rebuilt whenever
+// the poses change (UpdateJointGeometry, at prepare and after every position integration): the
+// axes turn during a step and the limits must see the angle the sub-step actually reached.
 #include "physics/joint.h"
 
 #include "base/assert.h"
@@ -103,42 +104,54 @@ void PrepareJoint(Joint& joint, const Body& a, const Body& b, const SolverContex
     joint.motorImpulse = glm::vec3(0.0f);
     joint.motorTorqueWorld = glm::vec3(0.0f);
   }
+  UpdateJointGeometry(joint, a, b);
+}
+
+void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b) {
+  AngularRows& rows = joint.rows;
+  rows = RowsFor(joint, a, b);
+  const glm::mat3 invInertiaSum = a.invInertiaWorld + b.invInertiaWorld;
+  for (int i = 0; i < rows.lockCount; ++i) rows.lockMass[i] = AngularEffectiveMass(invInertiaSum, rows.lockAxis[i]);
+  for (int i = 0; i < rows.limitCount; ++i) rows.limitMass[i] = AngularEffectiveMass(invInertiaSum, rows.limitAxis[i]);
+  joint.leverA = a.transform.rotation * joint.localAnchorA;
+  joint.leverB = b.transform.rotation * joint.localAnchorB;
+  if (joint.motor.enabled && rows.motorCount > 0) {
+    const glm::quat targetB = a.transform.rotation * joint.localFrameA * joint.motor.target;
+    const glm::vec3 error = RotationVector(b.transform.rotation * joint.localFrameB * glm::conjugate(targetB));
+    for (int i = 0; i < rows.motorCount; ++i) joint.motorError[i] = glm::dot(rows.motorAxis[i], error);
+  }
 }
 
 void WarmStartJoint(Joint& joint, Body& a, Body& b) {
   ApplyAngularImpulse(a, b, joint.angularImpulse);
-  const glm::vec3 rA = a.transform.rotation * joint.localAnchorA;
-  const glm::vec3 rB = b.transform.rotation * joint.localAnchorB;
-  ApplyLinearImpulse(a, b, rA, rB, joint.linearImpulse);
+  ApplyLinearImpulse(a, b, joint.leverA, joint.leverB, joint.linearImpulse);
 }
 
 void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bool useBias) {
-  const AngularRows rows = RowsFor(joint, a, b);
+  const AngularRows& rows = joint.rows;
 
   if (joint.motor.enabled && rows.motorCount > 0) {
-    const glm::quat targetB = a.transform.rotation * joint.localFrameA * joint.motor.target;
-    const glm::vec3 error = RotationVector(b.transform.rotation * joint.localFrameB * glm::conjugate(targetB));
-    float c[3] = {};
-    for (int i = 0; i < rows.motorCount; ++i) c[i] = glm::dot(rows.motorAxis[i], error);
     const MotorGains gains{joint.motor.stiffness, joint.motor.damping, joint.motor.maxTorque,
                            joint.motor.feedForwardTorque};
-    SolveMotorPart(a, b, rows.motorAxis, c, rows.motorCount, gains, joint.motorImpulse, context);
+    SolveMotorPart(a, b, rows.motorAxis, joint.motorError, rows.motorCount, gains, joint.motorImpulse, context);
     glm::vec3 torque(0.0f);
     for (int i = 0; i < rows.motorCount; ++i) torque += joint.motorImpulse[i] * rows.motorAxis[i];
     joint.motorTorqueWorld = context.invH * torque;
   }
 
   for (int i = 0; i < rows.limitCount; ++i) {
-    SolveAngularLimit(a, b, rows.limitAxis[i], rows.angle[i] - rows.range[i].lower, joint.lowerImpulse[i], context, useBias);
-    SolveAngularLimit(a, b, -rows.limitAxis[i], rows.range[i].upper - rows.angle[i], joint.upperImpulse[i], context,
-                      useBias);
+    SolveAngularLimit(a, b, rows.limitAxis[i], rows.limitMass[i], rows.angle[i] - rows.range[i].lower,
+                      joint.lowerImpulse[i], context, useBias);
+    SolveAngularLimit(a, b, -rows.limitAxis[i], rows.limitMass[i], rows.range[i].upper - rows.angle[i],
+                      joint.upperImpulse[i], context, useBias);
   }
 
   for (int i = 0; i < rows.lockCount; ++i) {
-    SolveAngularEquality(a, b, rows.lockAxis[i], rows.lockPosition[i], joint.lockImpulse[i], context, useBias);
+    SolveAngularEquality(a, b, rows.lockAxis[i], rows.lockMass[i], rows.lockPosition[i], joint.lockImpulse[i], context,
+                         useBias);
   }
 
-  SolvePointPart(a, b, joint.localAnchorA, joint.localAnchorB, joint.pointMass, joint.linearImpulse, context, useBias);
+  SolvePointPart(a, b, joint.leverA, joint.leverB, joint.pointMass, joint.linearImpulse, context, useBias);
   joint.angularImpulse = AngularImpulse(joint, rows);
 }
 

@@ -81,6 +81,11 @@ struct AngularRows {
 
   int motorCount = 0;
   glm::vec3 motorAxis[3];
+
+  // Effective masses of the lock and limit rows (AngularEffectiveMass; a limit's lower and upper
+  // rows share one, as their axes differ only in sign). Filled by UpdateJointGeometry.
+  float lockMass[2] = {};
+  float limitMass[3] = {};
 };
 
 // A joint inside the World: its definition in body-local terms plus accumulated impulses that
@@ -106,6 +111,13 @@ struct Joint {
   // warm start need not rebuild the rows.
   glm::vec3 angularImpulse{0.0f};
   glm::mat3 pointMass{0.0f};  // K^-1 of the point part for this step
+
+  // Everything that depends only on the two bodies' poses, refreshed by UpdateJointGeometry
+  // whenever they move. Positions change only in the position integration, so the relax pass of
+  // one sub-step and the warm start and solve of the next share one evaluation.
+  AngularRows rows;
+  glm::vec3 leverA{0.0f}, leverB{0.0f};  // world anchor offsets rA, rB from the centres of mass
+  float motorError[3] = {};              // c_i of the motor rows (when the motor is enabled), rad
 };
 
 // Builds the body-local joint from a world-space bind-pose definition.
@@ -117,8 +129,10 @@ glm::quat RelativeRotation(const Joint& joint, const Body& a, const Body& b);
 // World-space distance between the two anchor points (0 when the joint is exact), m.
 float AnchorSeparation(const Joint& joint, const Body& a, const Body& b);
 
-// The solver trio every joint type goes through (dispatch in joint.cpp).
+// The solver stages every joint type goes through (dispatch in joint.cpp). PrepareJoint ends with
+// UpdateJointGeometry; the solver calls it again after every position integration.
 void PrepareJoint(Joint& joint, const Body& a, const Body& b, const SolverContext& context);
+void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b);
 void WarmStartJoint(Joint& joint, Body& a, Body& b);
 void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bool useBias);
 

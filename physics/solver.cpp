@@ -72,8 +72,13 @@ void Solve(WorldState& state, const SolverContext& context, bool useBias) {
   SolveContacts(state.contacts, state.bodies, state.staticBody, context, useBias);
 }
 
+// Moves the bodies, then refreshes the joints' pose-dependent rows once for every pass that
+// sees these poses (this sub-step's relax, the next sub-step's warm start and solve).
 void IntegratePositions(WorldState& state, float h) {
   for (Body& body : state.bodies) IntegratePosition(body, h);
+  for (Joint& joint : state.joints) {
+    UpdateJointGeometry(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB]);
+  }
 }
 
 bool IsFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
