@@ -35,17 +35,89 @@ Body& SideA(const Contact& contact, std::vector<Body>& bodies, Body& staticBody)
   return contact.bodyA >= 0 ? bodies[contact.bodyA] : staticBody;
 }
 
+// kStaticA: side A is static geometry, which never moves and takes no impulse, so its terms are
+// compiled out of the rows (most contacts of a ragdoll lying on the ground are of this kind).
+
 // Relative velocity of B against A along row `row` of a point.
+template <bool kStaticA>
 float RowVelocity(const Body& a, const Body& b, const ContactPoint& cp, const glm::vec3& direction, int row) {
-  return glm::dot(direction, b.linearVelocity - a.linearVelocity) + glm::dot(b.angularVelocity, cp.crossB[row]) -
-         glm::dot(a.angularVelocity, cp.crossA[row]);
+  if constexpr (kStaticA) {
+    return glm::dot(direction, b.linearVelocity) + glm::dot(b.angularVelocity, cp.crossB[row]);
+  } else {
+    return glm::dot(direction, b.linearVelocity - a.linearVelocity) + glm::dot(b.angularVelocity, cp.crossB[row]) -
+           glm::dot(a.angularVelocity, cp.crossA[row]);
+  }
 }
 
+template <bool kStaticA>
 void ApplyRowImpulse(Body& a, Body& b, const ContactPoint& cp, const glm::vec3& direction, int row, float impulse) {
-  a.linearVelocity -= (a.invMass * impulse) * direction;
-  a.angularVelocity -= impulse * cp.turnA[row];
+  if constexpr (!kStaticA) {
+    a.linearVelocity -= (a.invMass * impulse) * direction;
+    a.angularVelocity -= impulse * cp.turnA[row];
+  }
   b.linearVelocity += (b.invMass * impulse) * direction;
   b.angularVelocity += impulse * cp.turnB[row];
+}
+
+template <bool kStaticA>
+void WarmStartContact(const Contact& contact, Body& a, Body& b) {
+  for (int i = 0; i < contact.pointCount; ++i) {
+    const ContactPoint& cp = contact.points[i];
+    ApplyRowImpulse<kStaticA>(a, b, cp, contact.normal, 0, cp.normalImpulse);
+    ApplyRowImpulse<kStaticA>(a, b, cp, contact.tangent[0], 1, cp.tangentImpulse[0]);
+    ApplyRowImpulse<kStaticA>(a, b, cp, contact.tangent[1], 2, cp.tangentImpulse[1]);
+  }
+}
+
+template <bool kStaticA>
+void SolveContact(Contact& contact, Body& a, Body& b, const SolverContext& context, bool useBias) {
+  const glm::vec3 n = contact.normal;
+  // Static geometry has no step deltas: its side of the separation update is zero.
+  const float approach =
+      kStaticA ? glm::dot(n, b.deltaPosition) : glm::dot(n, b.deltaPosition - a.deltaPosition);
+  const Softness& pushSoftness = kStaticA ? context.staticContactSoftness : context.contactSoftness;
+
+  for (int i = 0; i < contact.pointCount; ++i) {
+    ContactPoint& cp = contact.points[i];
+    float s = cp.separation + approach + glm::dot(b.deltaRotation, cp.crossB[0]);
+    if constexpr (!kStaticA) s -= glm::dot(a.deltaRotation, cp.crossA[0]);
+    float bias = 0.0f;
+    Softness soft = kRigid;
+    if (s > 0.0f) {
+      bias = s * context.invH;
+    } else if (useBias) {
+      soft = pushSoftness;
+      bias = std::max(soft.biasRate * s, -context.contactPushMaxSpeed);
+    }
+    const float vn = RowVelocity<kStaticA>(a, b, cp, n, 0);
+    // A speculative point that is not closing its gap this sub-step stays at zero impulse.
+    if (cp.normalImpulse == 0.0f && vn + bias >= 0.0f) continue;
+    const float impulse = -soft.massScale * cp.mass[0] * (vn + bias) - soft.impulseScale * cp.normalImpulse;
+    const float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
+    ApplyRowImpulse<kStaticA>(a, b, cp, n, 0, newImpulse - cp.normalImpulse);
+    cp.normalImpulse = newImpulse;
+  }
+
+  for (int i = 0; i < contact.pointCount; ++i) {
+    ContactPoint& cp = contact.points[i];
+    // Without normal impulse the friction disc is a point: nothing to apply or to remove.
+    if (cp.normalImpulse == 0.0f && cp.tangentImpulse[0] == 0.0f && cp.tangentImpulse[1] == 0.0f) continue;
+    const float old0 = cp.tangentImpulse[0];
+    const float old1 = cp.tangentImpulse[1];
+    float new0 = old0 - cp.mass[1] * RowVelocity<kStaticA>(a, b, cp, contact.tangent[0], 1);
+    float new1 = old1 - cp.mass[2] * RowVelocity<kStaticA>(a, b, cp, contact.tangent[1], 2);
+    const float maxFriction = contact.friction * cp.normalImpulse;
+    const float lengthSquared = new0 * new0 + new1 * new1;
+    if (lengthSquared > maxFriction * maxFriction) {
+      const float scale = maxFriction / std::sqrt(lengthSquared);
+      new0 *= scale;
+      new1 *= scale;
+    }
+    cp.tangentImpulse[0] = new0;
+    cp.tangentImpulse[1] = new1;
+    ApplyRowImpulse<kStaticA>(a, b, cp, contact.tangent[0], 1, new0 - old0);
+    ApplyRowImpulse<kStaticA>(a, b, cp, contact.tangent[1], 2, new1 - old1);
+  }
 }
 
 }  // namespace
@@ -83,13 +155,10 @@ void PrepareContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, 
 
 void WarmStartContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Body& staticBody) {
   for (Contact& contact : contacts) {
-    Body& a = SideA(contact, bodies, staticBody);
-    Body& b = bodies[contact.bodyB];
-    for (int i = 0; i < contact.pointCount; ++i) {
-      const ContactPoint& cp = contact.points[i];
-      ApplyRowImpulse(a, b, cp, contact.normal, 0, cp.normalImpulse);
-      ApplyRowImpulse(a, b, cp, contact.tangent[0], 1, cp.tangentImpulse[0]);
-      ApplyRowImpulse(a, b, cp, contact.tangent[1], 2, cp.tangentImpulse[1]);
+    if (contact.bodyA >= 0) {
+      WarmStartContact<false>(contact, bodies[contact.bodyA], bodies[contact.bodyB]);
+    } else {
+      WarmStartContact<true>(contact, staticBody, bodies[contact.bodyB]);
     }
   }
 }
@@ -97,52 +166,10 @@ void WarmStartContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies
 void SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Body& staticBody,
                    const SolverContext& context, bool useBias) {
   for (Contact& contact : contacts) {
-    Body& a = SideA(contact, bodies, staticBody);
-    Body& b = bodies[contact.bodyB];
-    const glm::vec3 n = contact.normal;
-    const float approach = glm::dot(n, b.deltaPosition - a.deltaPosition);
-    const Softness& pushSoftness = contact.bodyA >= 0 ? context.contactSoftness : context.staticContactSoftness;
-
-    for (int i = 0; i < contact.pointCount; ++i) {
-      ContactPoint& cp = contact.points[i];
-      const float s = cp.separation + approach + glm::dot(b.deltaRotation, cp.crossB[0]) -
-                      glm::dot(a.deltaRotation, cp.crossA[0]);
-      float bias = 0.0f;
-      Softness soft = kRigid;
-      if (s > 0.0f) {
-        bias = s * context.invH;
-      } else if (useBias) {
-        soft = pushSoftness;
-        bias = std::max(soft.biasRate * s, -context.contactPushMaxSpeed);
-      }
-      const float vn = RowVelocity(a, b, cp, n, 0);
-      // A speculative point that is not closing its gap this sub-step stays at zero impulse.
-      if (cp.normalImpulse == 0.0f && vn + bias >= 0.0f) continue;
-      const float impulse = -soft.massScale * cp.mass[0] * (vn + bias) - soft.impulseScale * cp.normalImpulse;
-      const float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
-      ApplyRowImpulse(a, b, cp, n, 0, newImpulse - cp.normalImpulse);
-      cp.normalImpulse = newImpulse;
-    }
-
-    for (int i = 0; i < contact.pointCount; ++i) {
-      ContactPoint& cp = contact.points[i];
-      // Without normal impulse the friction disc is a point: nothing to apply or to remove.
-      if (cp.normalImpulse == 0.0f && cp.tangentImpulse[0] == 0.0f && cp.tangentImpulse[1] == 0.0f) continue;
-      const float old0 = cp.tangentImpulse[0];
-      const float old1 = cp.tangentImpulse[1];
-      float new0 = old0 - cp.mass[1] * RowVelocity(a, b, cp, contact.tangent[0], 1);
-      float new1 = old1 - cp.mass[2] * RowVelocity(a, b, cp, contact.tangent[1], 2);
-      const float maxFriction = contact.friction * cp.normalImpulse;
-      const float lengthSquared = new0 * new0 + new1 * new1;
-      if (lengthSquared > maxFriction * maxFriction) {
-        const float scale = maxFriction / std::sqrt(lengthSquared);
-        new0 *= scale;
-        new1 *= scale;
-      }
-      cp.tangentImpulse[0] = new0;
-      cp.tangentImpulse[1] = new1;
-      ApplyRowImpulse(a, b, cp, contact.tangent[0], 1, new0 - old0);
-      ApplyRowImpulse(a, b, cp, contact.tangent[1], 2, new1 - old1);
+    if (contact.bodyA >= 0) {
+      SolveContact<false>(contact, bodies[contact.bodyA], bodies[contact.bodyB], context, useBias);
+    } else {
+      SolveContact<true>(contact, staticBody, bodies[contact.bodyB], context, useBias);
     }
   }
 }
