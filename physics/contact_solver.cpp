@@ -63,6 +63,8 @@ template <bool kStaticA>
 void WarmStartContact(const Contact& contact, Body& a, Body& b) {
   for (int i = 0; i < contact.pointCount; ++i) {
     const ContactPoint& cp = contact.points[i];
+    // A new or speculative point has nothing to apply.
+    if (cp.normalImpulse == 0.0f && cp.tangentImpulse[0] == 0.0f && cp.tangentImpulse[1] == 0.0f) continue;
     ApplyRowImpulse<kStaticA>(a, b, cp, contact.normal, 0, cp.normalImpulse);
     ApplyRowImpulse<kStaticA>(a, b, cp, contact.tangent[0], 1, cp.tangentImpulse[0]);
     ApplyRowImpulse<kStaticA>(a, b, cp, contact.tangent[1], 2, cp.tangentImpulse[1]);
