@@ -76,7 +76,12 @@ void IntegrateVelocity(Body& body, const glm::vec3& gravity, float h) {
                           glm::vec3(0.0f, 0.0f, body.inertiaLocal.z));
   const glm::vec3 momentum = body.inertiaLocal * w1;
   const glm::vec3 f = h * glm::cross(w1, momentum);
-  const glm::mat3 jacobian = inertia + h * (Skew(w1) * inertia - Skew(momentum));
+  // Skew(w1) * inertia with the diagonal inertia: each column of Skew(w1) scaled by its moment.
+  glm::mat3 skewTimesInertia = Skew(w1);
+  skewTimesInertia[0] *= body.inertiaLocal.x;
+  skewTimesInertia[1] *= body.inertiaLocal.y;
+  skewTimesInertia[2] *= body.inertiaLocal.z;
+  const glm::mat3 jacobian = inertia + h * (skewTimesInertia - Skew(momentum));
   const glm::vec3 w2 = w1 - glm::inverse(jacobian) * f;
   body.angularVelocity = q * w2;
 
