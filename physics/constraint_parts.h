@@ -168,29 +168,41 @@ struct MotorGains {
   glm::vec3 feedForward{0.0f}; // N m, world, torque on B (A gets the opposite)
 };
 
-// PD motor part over `count` (1..3) world axes with errors c[i] (rad) measured about them.
-// The accumulated impulse is in axis coordinates; the world torque it makes is clamped to
-// maxTorque h in norm (a universal joint's axes are not orthogonal once it bends, so clamping
-// the coordinates alone would let the torque exceed the cap).
+// Inverse effective mass (K + gamma 1)^-1 of a PD motor over `count` (1..3) world axes, with
+// K_ij = u_i . (IA^-1 + IB^-1) u_j; the zero matrix when the motor has neither spring nor damper.
+// It depends only on the poses and the gains, so the solver computes it once per pose.
+inline glm::mat3 MotorPartMass(const glm::mat3& invInertiaSum, const glm::vec3* axes, int count,
+                               const MotorGains& gains, float h) {
+  const float kh = gains.stiffness * h + gains.damping;
+  if (kh <= 0.0f) return glm::mat3(0.0f);
+  const float gamma = 1.0f / (h * kh);
+  glm::mat3 k(1.0f);
+  for (int i = 0; i < count; ++i) {
+    for (int j = 0; j < count; ++j) k[j][i] = glm::dot(axes[i], invInertiaSum * axes[j]);
+    k[i][i] += gamma;
+  }
+  return glm::inverse(k);
+}
+
+// PD motor part over `count` (1..3) world axes with errors c[i] (rad) measured about them and
+// `mass` from MotorPartMass. The accumulated impulse is in axis coordinates; the world torque it
+// makes is clamped to maxTorque h in norm (a universal joint's axes are not orthogonal once it
+// bends, so clamping the coordinates alone would let the torque exceed the cap).
 inline void SolveMotorPart(Body& a, Body& b, const glm::vec3* axes, const float* c, int count, const MotorGains& gains,
-                           glm::vec3& accumulated, const SolverContext& context) {
+                           const glm::mat3& mass, glm::vec3& accumulated, const SolverContext& context) {
   const float h = context.h;
   const float kh = gains.stiffness * h + gains.damping;
   glm::vec3 target = accumulated;
   if (kh > 0.0f) {
     const float gamma = 1.0f / (h * kh);
     const float betaOverH = gains.stiffness / kh;
-    const glm::mat3 invI = a.invInertiaWorld + b.invInertiaWorld;
     const glm::vec3 relativeW = b.angularVelocity - a.angularVelocity;
-    glm::mat3 k(1.0f);
     glm::vec3 rhs(0.0f);
     for (int i = 0; i < count; ++i) {
-      for (int j = 0; j < count; ++j) k[j][i] = glm::dot(axes[i], invI * axes[j]);
-      k[i][i] += gamma;
       rhs[i] = glm::dot(axes[i], relativeW) + betaOverH * c[i] +
                gamma * (accumulated[i] - h * glm::dot(axes[i], gains.feedForward));
     }
-    target = accumulated - glm::inverse(k) * rhs;
+    target = accumulated - mass * rhs;
   } else {
     // No spring and no damper: the motor is a pure torque.
     for (int i = 0; i < count; ++i) target[i] = h * glm::dot(axes[i], gains.feedForward);

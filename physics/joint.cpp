@@ -45,6 +45,10 @@ glm::vec3 RotationVector(glm::quat q) {
   return (2.0f * std::atan2(s, q.w) / s) * v;
 }
 
+MotorGains MotorGainsOf(const MotorDef& motor) {
+  return MotorGains{motor.stiffness, motor.damping, motor.maxTorque, motor.feedForwardTorque};
+}
+
 // Sum of J^T lambda of all angular rows, as one world impulse on B.
 glm::vec3 AngularImpulse(const Joint& joint, const AngularRows& rows) {
   glm::vec3 impulse(0.0f);
@@ -104,10 +108,10 @@ void PrepareJoint(Joint& joint, const Body& a, const Body& b, const SolverContex
     joint.motorImpulse = glm::vec3(0.0f);
     joint.motorTorqueWorld = glm::vec3(0.0f);
   }
-  UpdateJointGeometry(joint, a, b);
+  UpdateJointGeometry(joint, a, b, context);
 }
 
-void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b) {
+void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b, const SolverContext& context) {
   AngularRows& rows = joint.rows;
   rows = RowsFor(joint, a, b);
   const glm::mat3 invInertiaSum = a.invInertiaWorld + b.invInertiaWorld;
@@ -119,6 +123,7 @@ void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b) {
     const glm::quat targetB = a.transform.rotation * joint.localFrameA * joint.motor.target;
     const glm::vec3 error = RotationVector(b.transform.rotation * joint.localFrameB * glm::conjugate(targetB));
     for (int i = 0; i < rows.motorCount; ++i) joint.motorError[i] = glm::dot(rows.motorAxis[i], error);
+    joint.motorMass = MotorPartMass(invInertiaSum, rows.motorAxis, rows.motorCount, MotorGainsOf(joint.motor), context.h);
   }
 }
 
@@ -131,9 +136,8 @@ void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bo
   const AngularRows& rows = joint.rows;
 
   if (joint.motor.enabled && rows.motorCount > 0) {
-    const MotorGains gains{joint.motor.stiffness, joint.motor.damping, joint.motor.maxTorque,
-                           joint.motor.feedForwardTorque};
-    SolveMotorPart(a, b, rows.motorAxis, joint.motorError, rows.motorCount, gains, joint.motorImpulse, context);
+    SolveMotorPart(a, b, rows.motorAxis, joint.motorError, rows.motorCount, MotorGainsOf(joint.motor), joint.motorMass,
+                   joint.motorImpulse, context);
     glm::vec3 torque(0.0f);
     for (int i = 0; i < rows.motorCount; ++i) torque += joint.motorImpulse[i] * rows.motorAxis[i];
     joint.motorTorqueWorld = context.invH * torque;

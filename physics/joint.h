@@ -118,6 +118,7 @@ struct Joint {
   AngularRows rows;
   glm::vec3 leverA{0.0f}, leverB{0.0f};  // world anchor offsets rA, rB from the centres of mass
   float motorError[3] = {};              // c_i of the motor rows (when the motor is enabled), rad
+  glm::mat3 motorMass{0.0f};             // MotorPartMass of the motor rows (when enabled)
 };
 
 // Builds the body-local joint from a world-space bind-pose definition.
@@ -132,7 +133,7 @@ float AnchorSeparation(const Joint& joint, const Body& a, const Body& b);
 // The solver stages every joint type goes through (dispatch in joint.cpp). PrepareJoint ends with
 // UpdateJointGeometry; the solver calls it again after every position integration.
 void PrepareJoint(Joint& joint, const Body& a, const Body& b, const SolverContext& context);
-void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b);
+void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b, const SolverContext& context);
 void WarmStartJoint(Joint& joint, Body& a, Body& b);
 void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bool useBias);
 

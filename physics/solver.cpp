@@ -74,10 +74,10 @@ void Solve(WorldState& state, const SolverContext& context, bool useBias) {
 
 // Moves the bodies, then refreshes the joints' pose-dependent rows once for every pass that
 // sees these poses (this sub-step's relax, the next sub-step's warm start and solve).
-void IntegratePositions(WorldState& state, float h) {
-  for (Body& body : state.bodies) IntegratePosition(body, h);
+void IntegratePositions(WorldState& state, const SolverContext& context) {
+  for (Body& body : state.bodies) IntegratePosition(body, context.h);
   for (Joint& joint : state.joints) {
-    UpdateJointGeometry(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB]);
+    UpdateJointGeometry(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB], context);
   }
 }
 
@@ -121,7 +121,7 @@ StepStatus Step(WorldState& state) {
     IntegrateVelocities(state, context.h);
     if (context.warmStart) WarmStart(state);
     for (int i = 0; i < state.settings.solveIterations; ++i) Solve(state, context, true);
-    IntegratePositions(state, context.h);
+    IntegratePositions(state, context);
     for (int i = 0; i < state.settings.relaxIterations; ++i) Solve(state, context, false);
   }
 
