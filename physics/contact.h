@@ -25,7 +25,7 @@ struct ContactPoint {
 
   // Row data fixed for one step (PrepareContacts), as Box2D: row 0 is the normal, rows 1 and 2
   // the tangents. crossA/B = r x direction; turnA/B = I^-1 crossA/B, the angular velocity change
-  // per unit impulse.
+  // per unit impulse. Side A's rows are left unset against static geometry, which never moves.
   glm::vec3 crossA[3];
   glm::vec3 crossB[3];
   glm::vec3 turnA[3];

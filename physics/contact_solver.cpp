@@ -31,10 +31,6 @@ namespace rise::physics {
 
 namespace {
 
-Body& SideA(const Contact& contact, std::vector<Body>& bodies, Body& staticBody) {
-  return contact.bodyA >= 0 ? bodies[contact.bodyA] : staticBody;
-}
-
 // kStaticA: side A is static geometry, which never moves and takes no impulse, so its terms are
 // compiled out of the rows (most contacts of a ragdoll lying on the ground are of this kind).
 
@@ -57,6 +53,33 @@ void ApplyRowImpulse(Body& a, Body& b, const ContactPoint& cp, const glm::vec3& 
   }
   b.linearVelocity += (b.invMass * impulse) * direction;
   b.angularVelocity += impulse * cp.turnB[row];
+}
+
+template <bool kStaticA>
+void PrepareContact(Contact& contact, const Body& a, const Body& b, const SolverContext& context) {
+  const glm::vec3 directions[3] = {contact.normal, contact.tangent[0], contact.tangent[1]};
+  for (int i = 0; i < contact.pointCount; ++i) {
+    ContactPoint& cp = contact.points[i];
+    const glm::vec3 rA = cp.point - a.transform.position;
+    const glm::vec3 rB = cp.point - b.transform.position;
+    for (int row = 0; row < 3; ++row) {
+      cp.crossB[row] = glm::cross(rB, directions[row]);
+      cp.turnB[row] = b.invInertiaWorld * cp.crossB[row];
+      float k = 0.0f;
+      if constexpr (kStaticA) {
+        k = b.invMass + glm::dot(cp.crossB[row], cp.turnB[row]);
+      } else {
+        cp.crossA[row] = glm::cross(rA, directions[row]);
+        cp.turnA[row] = a.invInertiaWorld * cp.crossA[row];
+        k = a.invMass + b.invMass + glm::dot(cp.crossA[row], cp.turnA[row]) + glm::dot(cp.crossB[row], cp.turnB[row]);
+      }
+      cp.mass[row] = k > 0.0f ? 1.0f / k : 0.0f;
+    }
+    if (!context.warmStart) {
+      cp.normalImpulse = 0.0f;
+      cp.tangentImpulse[0] = cp.tangentImpulse[1] = 0.0f;
+    }
+  }
 }
 
 template <bool kStaticA>
@@ -131,26 +154,10 @@ void PrepareContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, 
     body.deltaRotation = glm::vec3(0.0f);
   }
   for (Contact& contact : contacts) {
-    const Body& a = SideA(contact, bodies, staticBody);
-    const Body& b = bodies[contact.bodyB];
-    const glm::vec3 directions[3] = {contact.normal, contact.tangent[0], contact.tangent[1]};
-    for (int i = 0; i < contact.pointCount; ++i) {
-      ContactPoint& cp = contact.points[i];
-      const glm::vec3 rA = cp.point - a.transform.position;
-      const glm::vec3 rB = cp.point - b.transform.position;
-      for (int row = 0; row < 3; ++row) {
-        cp.crossA[row] = glm::cross(rA, directions[row]);
-        cp.crossB[row] = glm::cross(rB, directions[row]);
-        cp.turnA[row] = a.invInertiaWorld * cp.crossA[row];
-        cp.turnB[row] = b.invInertiaWorld * cp.crossB[row];
-        const float k = a.invMass + b.invMass + glm::dot(cp.crossA[row], cp.turnA[row]) +
-                        glm::dot(cp.crossB[row], cp.turnB[row]);
-        cp.mass[row] = k > 0.0f ? 1.0f / k : 0.0f;
-      }
-      if (!context.warmStart) {
-        cp.normalImpulse = 0.0f;
-        cp.tangentImpulse[0] = cp.tangentImpulse[1] = 0.0f;
-      }
+    if (contact.bodyA >= 0) {
+      PrepareContact<false>(contact, bodies[contact.bodyA], bodies[contact.bodyB], context);
+    } else {
+      PrepareContact<true>(contact, staticBody, bodies[contact.bodyB], context);
     }
   }
 }
