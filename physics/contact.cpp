@@ -51,6 +51,7 @@ void TangentBasis(const glm::vec3& n, glm::vec3& t1, glm::vec3& t2) {
   t2 = glm::cross(n, t1);
 }
 
+// `contact` is freshly value-initialised (emplace_back), so its points' impulses start at zero.
 void InitContact(Contact& contact, const Manifold& manifold) {
   contact.normal = manifold.normal;
   TangentBasis(manifold.normal, contact.tangent[0], contact.tangent[1]);
@@ -58,7 +59,6 @@ void InitContact(Contact& contact, const Manifold& manifold) {
   for (int i = 0; i < manifold.pointCount; ++i) {
     const ManifoldPoint& mp = manifold.points[i];
     ContactPoint& cp = contact.points[i];
-    cp = ContactPoint{};
     cp.point = mp.point;
     cp.separation = mp.separation;
     cp.id = mp.id;
