@@ -68,7 +68,8 @@ void UpdateWorldInertia(Body& body) {
 
 void IntegrateVelocity(Body& body, const glm::vec3& gravity, float h) {
   body.linearVelocity += h * (gravity + body.invMass * body.force);
-  body.angularVelocity += h * (body.invInertiaWorld * body.torque);
+  // Most bodies carry no applied torque (joint motors act through constraints).
+  if (body.torque != glm::vec3(0.0f)) body.angularVelocity += h * (body.invInertiaWorld * body.torque);
 
   const glm::quat q = body.transform.rotation;
   const glm::vec3 w1 = glm::conjugate(q) * body.angularVelocity;
@@ -85,9 +86,9 @@ void IntegrateVelocity(Body& body, const glm::vec3& gravity, float h) {
   const glm::vec3 w2 = w1 - glm::inverse(jacobian) * f;
   body.angularVelocity = q * w2;
 
-  // Pade approximation of exp(-c h): stable for any damping and step.
-  body.linearVelocity *= 1.0f / (1.0f + h * body.linearDamping);
-  body.angularVelocity *= 1.0f / (1.0f + h * body.angularDamping);
+  // Pade approximation of exp(-c h): stable for any damping and step (a factor of exactly 1 without damping).
+  if (body.linearDamping != 0.0f) body.linearVelocity *= 1.0f / (1.0f + h * body.linearDamping);
+  if (body.angularDamping != 0.0f) body.angularVelocity *= 1.0f / (1.0f + h * body.angularDamping);
 }
 
 void IntegratePosition(Body& body, float h) {
