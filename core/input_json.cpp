@@ -38,12 +38,6 @@ std::string Quote(const std::string& s) {
   return "\"" + s + "\"";
 }
 
-std::string JoinNames(const std::vector<std::string>& names) {
-  std::string text;
-  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
-  return text;
-}
-
 std::string JoinPath(const std::string& path, const std::string& key) {
   return path.empty() ? key : path + "." + key;
 }
@@ -111,12 +105,8 @@ class Reader {
   // `value` must be an object whose keys are all in `allowed`.
   bool Object(const Json& value, const std::string& path, const std::vector<std::string>& allowed) {
     if (!value.is_object()) return Fail(path, "found " + DescribeJsonValue(value) + ", allowed: an object");
-    for (auto it = value.begin(); it != value.end(); ++it) {
-      if (std::find(allowed.begin(), allowed.end(), it.key()) != allowed.end()) continue;
-      std::string message = "unknown key " + Quote(it.key());
-      const std::string guess = ClosestName(it.key(), allowed);
-      if (!guess.empty()) message += ", did you mean " + Quote(guess) + "?";
-      return Fail(JoinPath(path, it.key()), message + " allowed: " + JoinNames(allowed));
+    if (const std::optional<UnknownKey> unknown = FindUnknownKey(value, allowed)) {
+      return Fail(JoinPath(path, unknown->key), unknown->message);
     }
     return true;
   }

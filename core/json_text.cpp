@@ -149,4 +149,21 @@ std::string ClosestName(const std::string& name, const std::vector<std::string>&
   return best;
 }
 
+std::string JoinNames(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+std::optional<UnknownKey> FindUnknownKey(const Json& object, const std::vector<std::string>& allowed) {
+  for (auto it = object.begin(); it != object.end(); ++it) {
+    if (std::find(allowed.begin(), allowed.end(), it.key()) != allowed.end()) continue;
+    std::string message = "unknown key \"" + it.key() + "\"";
+    const std::string guess = ClosestName(it.key(), allowed);
+    if (!guess.empty()) message += ", did you mean \"" + guess + "\"?";
+    return UnknownKey{it.key(), message + " allowed: " + JoinNames(allowed)};
+  }
+  return std::nullopt;
+}
+
 }  // namespace rise

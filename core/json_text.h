@@ -5,6 +5,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,5 +24,16 @@ std::string DescribeJsonValue(const nlohmann::json& value);
 
 // The candidate closest to `name` by edit distance, or "" when none is close enough to be a typo.
 std::string ClosestName(const std::string& name, const std::vector<std::string>& candidates);
+
+// Names joined with ", " for "allowed: ..." messages.
+std::string JoinNames(const std::vector<std::string>& names);
+
+// The first key of an object that is not in `allowed`, and the message the loaders give for it:
+// `unknown key "strat", did you mean "start"? allowed: character, start, ...`.
+struct UnknownKey {
+  std::string key;
+  std::string message;
+};
+std::optional<UnknownKey> FindUnknownKey(const nlohmann::json& object, const std::vector<std::string>& allowed);
 
 }  // namespace rise

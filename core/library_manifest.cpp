@@ -24,12 +24,6 @@ std::string Quote(const std::string& s) {
   return "\"" + s + "\"";
 }
 
-std::string Join(const std::vector<std::string>& names) {
-  std::string text;
-  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
-  return text;
-}
-
 // Short decimal for names and range values: 1.75, 70, 1.6667.
 std::string NameNumber(double value) {
   char text[32];
@@ -65,12 +59,8 @@ class ManifestReader {
 
   bool Keys(const Json& value, const std::string& path, const std::vector<std::string>& allowed) {
     if (!value.is_object()) return Fail(path, "found " + DescribeJsonValue(value) + ", allowed: an object");
-    for (auto it = value.begin(); it != value.end(); ++it) {
-      if (std::find(allowed.begin(), allowed.end(), it.key()) != allowed.end()) continue;
-      std::string message = "unknown key " + Quote(it.key());
-      const std::string guess = ClosestName(it.key(), allowed);
-      if (!guess.empty()) message += ", did you mean " + Quote(guess) + "?";
-      return Fail(path.empty() ? it.key() : path + "." + it.key(), message + " allowed: " + Join(allowed));
+    if (const std::optional<UnknownKey> unknown = FindUnknownKey(value, allowed)) {
+      return Fail(path.empty() ? unknown->key : path + "." + unknown->key, unknown->message);
     }
     return true;
   }
@@ -299,7 +289,7 @@ Result<LibraryManifest> ParseLibraryManifest(const std::string& text, const std:
     const std::vector<std::string> allowed{"glb", "gltf", "bvh"};
     if (!formats.is_array() || formats.empty()) {
       reader.Fail("formats",
-                  "found " + DescribeJsonValue(formats) + ", allowed: a non-empty array of " + Join(allowed));
+                  "found " + DescribeJsonValue(formats) + ", allowed: a non-empty array of " + JoinNames(allowed));
       return failed();
     }
     manifest.formats.clear();
@@ -308,7 +298,7 @@ Result<LibraryManifest> ParseLibraryManifest(const std::string& text, const std:
       const bool known = formats[i].is_string() &&
                          std::find(allowed.begin(), allowed.end(), formats[i].get<std::string>()) != allowed.end();
       if (!known) {
-        reader.Fail(at, "found " + DescribeJsonValue(formats[i]) + ", allowed: " + Join(allowed));
+        reader.Fail(at, "found " + DescribeJsonValue(formats[i]) + ", allowed: " + JoinNames(allowed));
         return failed();
       }
       if (std::find(manifest.formats.begin(), manifest.formats.end(), formats[i]) != manifest.formats.end()) {
