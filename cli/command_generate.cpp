@@ -50,6 +50,9 @@ int Run(const GenerateArgs& args) {
     const std::string problem = CheckClipOutputPath(path);
     if (!problem.empty()) return ReportError(problem);
   }
+  if (const std::string problem = CheckOutputsSpareInput(args.outputs, args.input); !problem.empty()) {
+    return ReportError(problem);
+  }
   for (const std::string* path : {&args.trace, &args.preview}) {
     const std::string problem = path->empty() ? "" : CheckOutputFolder(*path);
     if (!problem.empty()) return ReportError(problem);

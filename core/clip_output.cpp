@@ -66,6 +66,21 @@ std::vector<std::string> ClipOutputFiles(const std::vector<std::string>& paths) 
   return files;
 }
 
+std::string CheckOutputsSpareInput(const std::vector<std::string>& outputs, const std::string& input) {
+  std::error_code ec;
+  const fs::path in = fs::weakly_canonical(input, ec);
+  if (ec) return "";
+  for (const std::string& output : outputs) {
+    for (const std::string& file : ClipOutputFiles({output})) {
+      std::error_code fileEc;
+      if (fs::weakly_canonical(file, fileEc) != in || fileEc) continue;
+      const std::string what = file == output ? "" : " (its file " + file + ")";
+      return output + what + ": would overwrite the input file, allowed: outputs that leave " + input + " alone";
+    }
+  }
+  return "";
+}
+
 std::string WriteClipFiles(const Clip& clip, const std::vector<std::string>& paths, const ClipOutputOptions& options) {
   const Clip out = ApplyRootMotion(clip, options.rootMotion);
   std::vector<std::string> sidecars, written;

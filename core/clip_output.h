@@ -37,6 +37,10 @@ std::string CheckOutputFolder(const std::string& path);
 // Every file WriteClipFiles(…, paths, …) makes: the clips, a .gltf's .bin, the sidecars.
 std::vector<std::string> ClipOutputFiles(const std::vector<std::string>& paths);
 
+// "" unless one of `outputs` (with the files they bring: .bin, sidecar .json) would overwrite the
+// input file; `in.json -o in.glb` would otherwise replace the input with the clip's sidecar.
+std::string CheckOutputsSpareInput(const std::vector<std::string>& outputs, const std::string& input);
+
 // Writes `clip` (as simulated: root motion baked, canonical names) to every path. Returns "" on
 // success, otherwise the first writer's message, with no file of this call left behind.
 std::string WriteClipFiles(const Clip& clip, const std::vector<std::string>& paths, const ClipOutputOptions& options);

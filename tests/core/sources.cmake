@@ -8,6 +8,7 @@ set(RISE_TEST_CORE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/test_point_mass_plan.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_body_pose_ik.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_generate.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_clip_output.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_clip_quality.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_library_manifest.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_batch_runner.cpp
