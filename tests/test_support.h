@@ -8,7 +8,10 @@
 #include <glm/vec3.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <random>
+#include <sstream>
+#include <string>
 
 namespace rise::test {
 
@@ -16,6 +19,14 @@ namespace rise::test {
 inline std::mt19937& Rng() {
   static std::mt19937 rng(12345u);
   return rng;
+}
+
+// The bytes of a file ("" when it cannot be read).
+inline std::string FileContents(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
 }
 
 inline float Distance(const glm::vec3& a, const glm::vec3& b) {

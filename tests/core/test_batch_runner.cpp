@@ -1,7 +1,5 @@
 // SPDX-License-Identifier: MIT
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "core/batch_runner.h"
@@ -39,13 +37,6 @@ std::string Folder(const std::string& name) {
   return dir.string();
 }
 
-std::string Bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // Every file of folder a has a byte-identical twin in b and the reverse.
 void CheckSameFolders(const std::string& a, const std::string& b) {
   size_t count = 0;
@@ -53,7 +44,7 @@ void CheckSameFolders(const std::string& a, const std::string& b) {
     CAPTURE(entry.path().filename().string());
     const fs::path twin = fs::path(b) / entry.path().filename();
     REQUIRE(fs::exists(twin));
-    CHECK(Bytes(entry.path()) == Bytes(twin));
+    CHECK(rise::test::FileContents(entry.path()) == rise::test::FileContents(twin));
     ++count;
   }
   CHECK(count == static_cast<size_t>(std::distance(fs::directory_iterator(b), fs::directory_iterator())));
@@ -97,7 +88,7 @@ TEST_SUITE("batch_runner") {
     CHECK_FALSE(report.stopped);
     CHECK(report.ioError.empty());
     // The file on disk is the document the report holds.
-    CHECK(nlohmann::ordered_json::parse(Bytes(fs::path(options.outDir) / "index.json")) == report.index);
+    CHECK(nlohmann::ordered_json::parse(rise::test::FileContents(fs::path(options.outDir) / "index.json")) == report.index);
     CHECK(report.index["summary"]["clips"] == 3);
     CHECK(report.index["summary"]["failed"] == 3);
     const auto& entry = report.index["clips"][1];
@@ -160,7 +151,7 @@ TEST_SUITE("batch_runner") {
     const rise::BatchReport report = rise::RunBatch(manifest, All(manifest), options);
     CHECK(report.stopped);
     CHECK(report.pending == 3);
-    const auto index = nlohmann::ordered_json::parse(Bytes(fs::path(options.outDir) / "index.json"));
+    const auto index = nlohmann::ordered_json::parse(rise::test::FileContents(fs::path(options.outDir) / "index.json"));
     CHECK(index["summary"]["pending"] == 3);
     CHECK(index["clips"][0]["status"] == "pending");
     CHECK_FALSE(index.contains("libraries"));

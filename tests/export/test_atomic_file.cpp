@@ -1,30 +1,17 @@
 // SPDX-License-Identifier: MIT
-#include <fstream>
-#include <sstream>
 
 #include "export/atomic_file.h"
 #include "export/biped_fixture.h"
 #include "test_support.h"
-
-namespace {
-
-std::string Contents(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-}  // namespace
 
 TEST_SUITE("atomic_file") {
   TEST_CASE("writes the bytes, replaces an existing file and leaves no temporary behind") {
     rise::test::TempFolder folder;
     const std::string path = folder.File("clip.glb");
     REQUIRE(rise::WriteFileAtomically(path, std::string("first\0binary", 12)).empty());
-    CHECK(Contents(path) == std::string("first\0binary", 12));
+    CHECK(rise::test::FileContents(path) == std::string("first\0binary", 12));
     REQUIRE(rise::WriteFileAtomically(path, "second").empty());
-    CHECK(Contents(path) == "second");
+    CHECK(rise::test::FileContents(path) == "second");
     CHECK(folder.Files() == std::vector<std::string>{"clip.glb"});
   }
   TEST_CASE("a missing folder gives a clear error and creates nothing") {

@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <cstring>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
 #include "export/biped_fixture.h"
 #include "export/clip_metadata_json.h"
@@ -14,16 +12,9 @@
 
 namespace {
 
-std::string Contents(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 // The JSON chunk of a .glb (header: magic, version, length; then chunk 0).
 nlohmann::json GlbJson(const std::string& path) {
-  const std::string bytes = Contents(path);
+  const std::string bytes = rise::test::FileContents(path);
   REQUIRE(bytes.size() > 20);
   REQUIRE(bytes.compare(0, 4, "glTF") == 0);
   uint32_t version = 0, length = 0, chunkLength = 0;
@@ -86,7 +77,7 @@ TEST_SUITE("gltf_writer") {
 
     // The same metadata in the sidecar.
     rise::ClipMetadata sidecar;
-    REQUIRE(rise::MetadataFromJson(Contents(folder.File("swing.json")), sidecar) == "");
+    REQUIRE(rise::MetadataFromJson(rise::test::FileContents(folder.File("swing.json")), sidecar) == "");
     CHECK(sidecar.phases.size() == 2);
     CHECK(sidecar.phases[1].name == "rise");
     CHECK(sidecar.seed == 42);
@@ -145,7 +136,7 @@ TEST_SUITE("gltf_writer") {
     rise::test::TempFolder folder;
     const rise::Clip clip = rise::test::SwingClip(24.0, 2.0);
     REQUIRE(rise::WriteGltf(clip, folder.File("swing.gltf")) == "");
-    const nlohmann::json doc = nlohmann::json::parse(Contents(folder.File("swing.gltf")));
+    const nlohmann::json doc = nlohmann::json::parse(rise::test::FileContents(folder.File("swing.gltf")));
     CHECK(doc["buffers"][0]["uri"] == "swing.bin");
     CHECK(doc["buffers"][0]["byteLength"] == std::filesystem::file_size(folder.File("swing.bin")));
     rise::Clip back;
