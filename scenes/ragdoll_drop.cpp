@@ -23,40 +23,34 @@ glm::quat VerticalTwistFrame() { return glm::angleAxis(0.5f * kPi, glm::vec3(0.0
 // Hinge frame whose x axis is world +X (the lateral axis of elbows, wrists and knees).
 glm::quat LateralHingeFrame() { return glm::quat(1.0f, 0.0f, 0.0f, 0.0f); }
 
-RagdollJoint Ball(const char* name, int parent, int child, glm::vec3 anchor, AngleRange twist, float cone) {
+// The fields every joint kind sets alike.
+RagdollJoint Joint(const char* name, int parent, int child, JointType type, glm::vec3 anchor, glm::quat frame) {
   RagdollJoint joint;
   joint.name = name;
   joint.parent = parent;
   joint.child = child;
-  joint.type = JointType::kBall;
+  joint.type = type;
   joint.anchor = anchor;
-  joint.frame = VerticalTwistFrame();
+  joint.frame = frame;
+  return joint;
+}
+
+RagdollJoint Ball(const char* name, int parent, int child, glm::vec3 anchor, AngleRange twist, float cone) {
+  RagdollJoint joint = Joint(name, parent, child, JointType::kBall, anchor, VerticalTwistFrame());
   joint.twistLimits = twist;
   joint.swingCone = cone;
   return joint;
 }
 
 RagdollJoint Hinge(const char* name, int parent, int child, glm::vec3 anchor, AngleRange angle) {
-  RagdollJoint joint;
-  joint.name = name;
-  joint.parent = parent;
-  joint.child = child;
-  joint.type = JointType::kHinge;
-  joint.anchor = anchor;
-  joint.frame = LateralHingeFrame();
+  RagdollJoint joint = Joint(name, parent, child, JointType::kHinge, anchor, LateralHingeFrame());
   joint.twistLimits = angle;
   return joint;
 }
 
 RagdollJoint Universal(const char* name, int parent, int child, glm::vec3 anchor, AngleRange flexion,
                        AngleRange abduction) {
-  RagdollJoint joint;
-  joint.name = name;
-  joint.parent = parent;
-  joint.child = child;
-  joint.type = JointType::kUniversal;
-  joint.anchor = anchor;
-  joint.frame = VerticalTwistFrame();
+  RagdollJoint joint = Joint(name, parent, child, JointType::kUniversal, anchor, VerticalTwistFrame());
   joint.swingYLimits = flexion;
   joint.swingZLimits = abduction;
   return joint;
