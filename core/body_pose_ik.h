@@ -10,7 +10,7 @@
 // clamped to the hinge's range); the two root angles then turn the limb onto
 // the target (each a closed-form solution of a rotation about a known axis).
 // With no twist DOF the bend plane is not free: it follows from the root's
-// two angles, which is why TwoBoneIk's pole/swivel is not used here. The end
+// two angles, so there is no pole or swivel parameter here. The end
 // (hand or foot) matches one key direction of the wanted end rotation -- the
 // palm's normal, the sole's normal -- which its 2 DOF can always do.
 #pragma once

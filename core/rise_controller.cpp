@@ -111,9 +111,6 @@ RiseController::RiseController(const BipedDef& def, const RiseSpec& spec)
   crawlComHeight_ = 0.5f * standComHeight_;
   const BoneBox& foot = sk.joints[rig_.end[2]].box;
   toeLocal_ = glm::vec3(0.0f, foot.center.y - foot.halfExtents.y, foot.center.z + foot.halfExtents.z);
-  heelLocal_ = glm::vec3(0.0f, foot.center.y - foot.halfExtents.y, foot.center.z - foot.halfExtents.z);
-  // Dorsiflexion is the negative end of the ankle's first DOF (see biped_def.h).
-  ankleDorsiflexionLimit_ = glm::radians(std::fabs(def.bones[rig_.end[2]].dofs[0].maxDeg));
   subtree_.assign(sk.joints.size(), {});
   for (int j = sk.JointCount() - 1; j >= 0; --j) {
     subtree_[j].push_back(j);
@@ -379,12 +376,11 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
 // ---------------------------------------------------------------------------
 // Planning
 
-void RiseController::StartMove(Move move, const BodyReading& reading) {
+void RiseController::StartMove(Move move) {
   move.duration /= std::max(0.25, spec_.style.speed) * (1.0 - 0.4 * spec_.style.tiredness);
   move_ = std::move(move);
   phase_ = move_.phase;
   hasMove_ = true;
-  moveStart_ = reading.time;
   progress_ = 0.0f;
   for (int i = 0; i < kLimbCount; ++i) planted_[i] = move_.limbs[i].planted;
 }
@@ -404,12 +400,12 @@ bool RiseController::Fallen(const BodyReading& r) const {
 void RiseController::PlanNext(const BodyReading& reading) {
   switch (phase_) {
     case RisePhase::kSettle:
-    case RisePhase::kRoll: StartMove(PlanRoll(reading), reading); break;
-    case RisePhase::kPlace: StartMove(PlanPush(reading), reading); break;
+    case RisePhase::kRoll: StartMove(PlanRoll(reading)); break;
+    case RisePhase::kPlace: StartMove(PlanPush(reading)); break;
     case RisePhase::kPush:
-    case RisePhase::kCrawl: StartMove(PlanCrawl(reading), reading); break;
-    case RisePhase::kRise: StartMove(PlanStand(reading), reading); break;
-    case RisePhase::kStand: StartMove(PlanStand(reading), reading); break;
+    case RisePhase::kCrawl: StartMove(PlanCrawl(reading)); break;
+    case RisePhase::kRise: StartMove(PlanStand(reading)); break;
+    case RisePhase::kStand: StartMove(PlanStand(reading)); break;
   }
 }
 

@@ -145,7 +145,7 @@ class RiseController {
   PoseGoal GoalAt(const Move& move, float s, const BodyReading& reading) const;
   glm::vec3 PoseCom(const PoseGoal& goal) const;
   void EvaluateLimb(const LimbMove& limb, Limb which, float s, const PoseGoal& trunkGoal, LimbGoal& out) const;
-  void StartMove(Move move, const BodyReading& reading);
+  void StartMove(Move move);
   bool Fallen(const BodyReading& reading) const;
   // Gravity compensation and support forces through the joints (Jacobian
   // transpose): the torque each joint needs to hold its distal part and pass
@@ -163,13 +163,11 @@ class RiseController {
   float totalMass_ = 0.0f;
   float armReach_ = 0.0f, legReach_ = 0.0f, standPelvisHeight_ = 0.0f;
   float standComHeight_ = 0.0f, crawlComHeight_ = 0.0f, shoulderHalfWidth_ = 0.0f;
-  glm::vec3 toeLocal_{0.0f}, heelLocal_{0.0f};  // foot sole edges in the foot frame
-  float ankleDorsiflexionLimit_ = 0.5f;        // radians
+  glm::vec3 toeLocal_{0.0f};  // middle of the foot's toe edge, in the foot frame
 
   RisePhase phase_ = RisePhase::kSettle;
   Move move_;
   bool hasMove_ = false;
-  double moveStart_ = 0.0;
   float progress_ = 0.0f;
   double lastTime_ = 0.0;
   double restSince_ = -1.0;

@@ -4,7 +4,6 @@ set(RISE_TEST_CORE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/test_input_json.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_input_schema.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_biped.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/test_two_bone_ik.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_point_mass_plan.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_body_pose_ik.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_generate.cpp
