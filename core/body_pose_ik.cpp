@@ -13,6 +13,9 @@
 namespace rise {
 namespace {
 
+// An end counts as matching its goal when its key direction is within 2 deg.
+const float kEndKeyCos = std::cos(glm::radians(2.0f));
+
 bool IsArm(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kHandRight; }
 
 int RequireJoint(const Skeleton& skeleton, const char* name) {
@@ -139,7 +142,9 @@ BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseG
     pose.worldRotations[rig.end[i]] = glm::normalize(
         lowerWorld * glm::angleAxis(end.x, rig.endDofs[i][0].axis) * glm::angleAxis(end.y, rig.endDofs[i][1].axis));
 
+    const glm::vec3 endKey = glm::angleAxis(end.x, rig.endDofs[i][0].axis) * glm::angleAxis(end.y, rig.endDofs[i][1].axis) * rig.endKey[i];
     pose.reached[i] = glm::length(rootRotation * limbVector - reach) < 1e-3f;
+    pose.endMatched[i] = glm::dot(endKey, wanted) > kEndKeyCos;
   }
 
   // End joints (no body of their own) follow their parent; then forward kinematics.

@@ -67,7 +67,8 @@ struct BodyRig {
 struct BodyPose {
   std::vector<glm::quat> worldRotations;  // per skeleton joint
   std::vector<glm::vec3> worldPositions;  // per skeleton joint
-  std::array<bool, kLimbCount> reached{};  // each limb target met without clamping
+  std::array<bool, kLimbCount> reached{};     // each limb target met without clamping
+  std::array<bool, kLimbCount> endMatched{};  // each end's key direction met (within 2 deg)
 };
 
 // Solves the pose; a pure function of its inputs.

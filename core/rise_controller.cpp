@@ -49,6 +49,12 @@ constexpr int kMaxRetries = 4;
 // Phase 2 starts once the CoM's ground projection is this close to the feet's
 // soles (negative: inside); the rise's balance loop centres it from there.
 constexpr float kRiseTriggerDistance = 0.02f;  // m
+// Phase 2's balance feedback: how far the pose's CoM goal moves against the
+// capture point's offset from the feet centre.
+constexpr float kCaptureGain = 1.0f;
+constexpr float kMaxBalanceSlide = 0.1f;  // m the pelvis may slide from its planned place
+constexpr float kMaxBalanceLean = 1.2f;   // rad the trunk may lean forward of its plan
+constexpr float kLeanRate = 0.8f;         // rad/s the balance lean may change
 // The feet walk in while they are farther than this behind the hands (a squat
 // with the hands down has them about this far apart); a step is at most
 // kFootStep long and leans the CoM kFootStepMargin into its triangle first.
@@ -160,6 +166,14 @@ glm::vec3 RiseController::FeetCentre(const BodyReading& r) const {
   return Project(ground_, sum * 0.5f);
 }
 
+glm::vec3 RiseController::BalancePoint(const BodyReading& r) const {
+  // Between the ankles and the soles' centres: where a person standing at ease
+  // keeps the CoM, so the ankles work little and the toes and heels keep a margin.
+  glm::vec3 ankles(0.0f);
+  for (int i = 2; i < 4; ++i) ankles += 0.5f * r.jointPositions[rig_.end[i]];
+  return 0.5f * (FeetCentre(r) + Project(ground_, ankles));
+}
+
 SupportPolygon RiseController::FeetRegion(const BodyReading& r) const {
   // The soles as they lie once flat: from each toe edge back along the heading
   // by the foot's length. While the heels are still up the body rests on its
@@ -256,7 +270,10 @@ glm::vec3 RiseController::AnkleForToe(const glm::vec3& toePoint, const glm::quat
 }
 
 glm::vec3 RiseController::PoseCom(const PoseGoal& goal) const {
-  const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
+  return PoseCom(SolveBodyPose(def_.skeleton, rig_, goal));
+}
+
+glm::vec3 RiseController::PoseCom(const BodyPose& pose) const {
   glm::vec3 sum(0.0f);
   for (int j = 0; j < def_.skeleton.JointCount(); ++j) {
     const SkeletonJoint& joint = def_.skeleton.joints[j];
@@ -332,10 +349,51 @@ void RiseController::EvaluateLimb(const LimbMove& limb, Limb which, float s, con
   }
 }
 
-PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& reading) const {
+void RiseController::Lean(const Move& move, float s, float lean, PoseGoal& goal) const {
+  const glm::quat tilt = glm::angleAxis(lean, glm::normalize(glm::cross(kUp, heading_)));
+  goal.pelvisRotation = tilt * goal.pelvisRotation;
+  goal.chestRotation = tilt * goal.chestRotation;
+  goal.headRotation = tilt * goal.headRotation;
+  for (int i = 0; i < kLimbCount; ++i) {
+    if (move.limbs[i].mode == LimbMode::kBody) EvaluateLimb(move.limbs[i], static_cast<Limb>(i), s, goal, goal.limbs[i]);
+  }
+}
+
+bool RiseController::FeetFlat(const PoseGoal& goal) const {
+  const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
+  return pose.reached[2] && pose.reached[3] && pose.endMatched[2] && pose.endMatched[3];
+}
+
+float RiseController::BalanceLean(const Move& move, float s, const BodyReading& reading) const {
+  // Hip strategy: how far the trunk leans forward of the plan (never back) for
+  // the pose's CoM to reach the balance point along the heading. Leaning is
+  // what keeps a rise out of a deep squat feasible, where the ankles cannot
+  // bring the knees further forward. A lean the hips cannot make with the
+  // feet flat counts as too far.
+  const PoseGoal planned = GoalAt(move, s, reading, false);
+  const glm::vec3 target = BalancePoint(reading);
+  auto ahead = [&](float lean) {
+    PoseGoal goal = planned;
+    Lean(move, s, lean, goal);
+    const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
+    if (!pose.reached[2] || !pose.reached[3] || !pose.endMatched[2] || !pose.endMatched[3]) return 1.0f;
+    return glm::dot(PoseCom(pose) - target, heading_);
+  };
+  float lo = 0.0f, hi = kMaxBalanceLean;
+  if (ahead(hi) < 0.0f) return hi;
+  if (ahead(lo) >= 0.0f) return lo;
+  for (int iteration = 0; iteration < 7; ++iteration) {
+    const float mid = 0.5f * (lo + hi);
+    (ahead(mid) < 0.0f ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& reading, bool balance) const {
   const float e = Ease(s);
   PoseGoal goal;
   goal.pelvisPosition = glm::mix(move.from.pelvis, move.to.pelvis, e);
+  if (move.keepComOverFeet && !reading.jointPositions.empty()) goal.pelvisPosition = RisingPelvis(move, e, reading);
   goal.pelvisRotation = glm::slerp(move.from.pelvisRotation, move.to.pelvisRotation, e);
   goal.chestRotation = glm::slerp(move.from.chestRotation, move.to.chestRotation, Ease(std::min(1.0f, s * 1.25f)));
 
@@ -356,15 +414,37 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
 
   for (int i = 0; i < kLimbCount; ++i) EvaluateLimb(move.limbs[i], static_cast<Limb>(i), s, goal, goal.limbs[i]);
 
-  if (move.keepComOverFeet && !reading.jointPositions.empty()) {
+  if (move.keepComOverFeet && balance && !reading.jointPositions.empty()) {
     // Primary constraint of Phase 2: the whole-body CoM over the feet. The
-    // pelvis is slid along the ground until the pose's CoM is over the centre
-    // of the feet, plus the integral correction from the measured CoM.
-    const glm::vec3 centre = FeetCentre(reading) + balanceOffset_;
+    // trunk leans by balanceLean_ (the hip strategy, planned and smoothed in
+    // Update); then the pelvis slides along the ground (the ankle strategy)
+    // until the pose's CoM is over the balance point, moved to the far side of
+    // it from the measured capture point (CoM + velocity / omega of the
+    // inverted pendulum) so a body drifting forward is leaned back before its
+    // CoM leaves the feet, plus the integral correction for the servos' sag.
+    // The correction is bounded by what the feet can hold, the slide by what
+    // the ankles allow with the feet flat where they are.
+    const glm::vec3 target = BalancePoint(reading);
+    const float omega = std::sqrt(9.81f / std::max(0.3f, Height(ground_, reading.com)));
+    glm::vec3 capture = reading.com + reading.comVelocity / omega - target;
+    capture -= ground_.normal * glm::dot(capture, ground_.normal);
+    glm::vec3 correction = balanceOffset_ - kCaptureGain * capture;
+    const float footLength = 2.0f * def_.skeleton.joints[rig_.end[2]].box.halfExtents.z;
+    const float maxCorrection = 0.4f * footLength;
+    if (glm::length(correction) > maxCorrection) correction *= maxCorrection / glm::length(correction);
+    const glm::vec3 centre = target + correction;
+    Lean(move, s, balanceLean_, goal);
+    const glm::vec3 nominal = goal.pelvisPosition;
+    glm::vec3 slide(0.0f);
     for (int iteration = 0; iteration < 3; ++iteration) {
       glm::vec3 error = centre - PoseCom(goal);
       error -= ground_.normal * glm::dot(error, ground_.normal);
-      goal.pelvisPosition += error;
+      slide += error;
+      if (glm::length(slide) > kMaxBalanceSlide) slide *= kMaxBalanceSlide / glm::length(slide);
+      for (int halving = 0; halving < 5; ++halving, slide *= 0.5f) {
+        goal.pelvisPosition = nominal + slide;
+        if (FeetFlat(goal)) break;
+      }
       for (int i = 0; i < kLimbCount; ++i) {
         if (move.limbs[i].mode == LimbMode::kBody) EvaluateLimb(move.limbs[i], static_cast<Limb>(i), s, goal, goal.limbs[i]);
       }
@@ -383,6 +463,14 @@ void RiseController::StartMove(Move move) {
   hasMove_ = true;
   progress_ = 0.0f;
   for (int i = 0; i < kLimbCount; ++i) planted_[i] = move_.limbs[i].planted;
+}
+
+bool RiseController::OnItsFeet(const BodyReading& r) {
+  if (!r.touching[2] || !r.touching[3] || Height(ground_, r.jointPositions[rig_.pelvis]) < 0.3f * standPelvisHeight_) {
+    return false;
+  }
+  heading_ = SafeNormalize(Horizontal(r.jointRotations[rig_.pelvis] * glm::vec3(0, 0, 1)), heading_);
+  return FeetRegion(r).SignedDistance(Ground(r.com)) < -0.02f;
 }
 
 bool RiseController::Fallen(const BodyReading& r) const {
@@ -413,14 +501,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   const glm::quat chest = r.jointRotations[rig_.chest];
   const glm::vec3 face = chest * glm::vec3(0, 0, 1);
   // Crouched on both feet with the CoM over them: Phase 2 directly.
-  if (r.touching[2] && r.touching[3]) {
-    heading_ = SafeNormalize(Horizontal(r.jointRotations[rig_.pelvis] * glm::vec3(0, 0, 1)), heading_);
-    const SupportPolygon feet = FeetRegion(r);
-    if (Height(ground_, r.jointPositions[rig_.pelvis]) > 0.3f * standPelvisHeight_ &&
-        feet.SignedDistance(Ground(r.com)) < -0.02f) {
-      return PlanRise(r);
-    }
-  }
+  if (OnItsFeet(r)) return PlanRise(r);
   // Face down already: Phase 0 goes straight to placing hands and feet.
   if (glm::dot(face, ground_.normal) < -0.7f) return PlanPlace(r);
 
@@ -724,12 +805,39 @@ RiseController::Move RiseController::PlanFollow(const BodyReading& r) {
   return move;
 }
 
+std::array<float, 2> RiseController::LegPitches(const BodyReading& r, int leg) const {
+  // Pitch from the vertical toward the heading, of the shin (ankle to knee) and
+  // of the thigh (knee to hip).
+  const glm::vec3 ankle = r.jointPositions[rig_.end[leg]], knee = r.jointPositions[rig_.lower[leg]];
+  const glm::vec3 hip = r.jointPositions[rig_.upper[leg]];
+  auto pitch = [&](const glm::vec3& v) { return std::atan2(glm::dot(v, heading_), glm::dot(v, kUp)); };
+  return {pitch(knee - ankle), pitch(hip - knee)};
+}
+
+glm::vec3 RiseController::RisingPelvis(const Move& move, float e, const BodyReading& r) const {
+  // The legs straighten in their own angles, shin and thigh pitch going to zero
+  // together, standing on the feet where they are. A straight line for the
+  // pelvis instead would carry the knees forward of what the ankles allow on
+  // the way up out of a deep squat.
+  glm::vec3 pelvis(0.0f);
+  for (int leg = 2; leg < 4; ++leg) {
+    const float shinLength = glm::length(def_.skeleton.joints[rig_.end[leg]].restOffset);
+    const float thighLength = glm::length(def_.skeleton.joints[rig_.lower[leg]].restOffset);
+    auto along = [&](float pitch) { return kUp * std::cos(pitch) + heading_ * std::sin(pitch); };
+    const std::array<float, 2>& from = move.legPitches[leg - 2];
+    const glm::vec3 ankle = r.jointPositions[rig_.end[leg]];
+    pelvis += 0.5f * (ankle + shinLength * along(from[0] * (1.0f - e)) + thighLength * along(from[1] * (1.0f - e)));
+  }
+  return pelvis;
+}
+
 RiseController::Move RiseController::PlanRise(const BodyReading& r) {
   Move move;
   move.name = "rise";
   move.phase = RisePhase::kRise;
   move.duration = 2.6;
   move.keepComOverFeet = true;
+  for (int leg = 2; leg < 4; ++leg) move.legPitches[leg - 2] = LegPitches(r, leg);
   move.from = MeasuredTrunk(r);
   move.to.pelvisRotation = move.to.chestRotation = TrunkRotation(heading_, 0.5f * kPi);
   move.to.pelvis = FeetCentre(r) + ground_.normal * standPelvisHeight_ * 0.985f;
@@ -750,6 +858,7 @@ RiseController::Move RiseController::PlanRise(const BodyReading& r) {
     move.limbs[i].span = 0.5f;
   }
   balanceOffset_ = glm::vec3(0.0f);
+  balanceLean_ = BalanceLean(move, 0.0f, r);
   return move;
 }
 
@@ -761,6 +870,26 @@ RiseController::Move RiseController::PlanStand(const BodyReading& r) {
   for (int i = 0; i < 2; ++i) move.limbs[i].from = move.limbs[i].to, move.limbs[i].fromRotation = move.limbs[i].toRotation;
   if (standTime_ < 0.0) standTime_ = r.time;
   return move;
+}
+
+glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb) const {
+  const int end = rig_.end[static_cast<int>(limb)];
+  const BoneBox& box = def_.skeleton.joints[end].box;
+  const glm::quat rotation = r.jointRotations[end];
+  // A soft wrist loads the heel of the hand.
+  if (IsArm(limb)) return Project(ground_, r.jointPositions[end] + rotation * (0.3f * box.center));
+  // A foot up on its toes presses at the toe edge.
+  if (glm::dot(rotation * kUp, ground_.normal) < std::cos(glm::radians(10.0f))) {
+    return Project(ground_, r.jointPositions[end] + rotation * toeLocal_);
+  }
+  // A flat foot is to press right below the CoM, along its length: where the
+  // force must act for the body to balance. (Where it presses now would be
+  // wrong: tipping back, the pressure moves to the heel, and feeding that
+  // forward would take away the ankle torque that stops the tipping.)
+  const glm::vec3 centre = r.jointPositions[end] + rotation * box.center;
+  const glm::vec3 along = rotation * glm::vec3(0.0f, 0.0f, 1.0f);
+  const float offset = std::clamp(glm::dot(r.com - centre, along), -box.halfExtents.z, box.halfExtents.z);
+  return Project(ground_, centre + along * offset);
 }
 
 void RiseController::FeedForward(const BodyReading& r, std::vector<glm::vec3>& out) const {
@@ -777,10 +906,7 @@ void RiseController::FeedForward(const BodyReading& r, std::vector<glm::vec3>& o
   std::vector<int> supports;
   for (int i = 0; i < kLimbCount; ++i) {
     if (!planted_[i] || !r.touching[i]) continue;
-    const int end = rig_.end[i];
-    // A soft wrist loads the heel of the hand; a foot presses at its sole's centre.
-    const glm::vec3 local = IsArm(static_cast<Limb>(i)) ? 0.3f * sk.joints[end].box.center : sk.joints[end].box.center;
-    point[i] = Project(ground_, r.jointPositions[end] + r.jointRotations[end] * local);
+    point[i] = SupportPoint(r, static_cast<Limb>(i));
     supports.push_back(i);
   }
   if (supports.empty()) return;
@@ -842,7 +968,9 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     const bool still = reading.maxBodySpeed < kRestSpeed && reading.maxAngularSpeed < kRestSpin;
     if (!still) restSince_ = -1.0;
     else if (restSince_ < 0.0) restSince_ = reading.time;
-    if (restSince_ >= 0.0 && reading.time - restSince_ >= kRestHold) PlanNext(reading);
+    // A body already balanced on its feet is not lying: it must not sag while it
+    // waits for rest, so Phase 2 takes it at once.
+    if ((restSince_ >= 0.0 && reading.time - restSince_ >= kRestHold) || OnItsFeet(reading)) PlanNext(reading);
   } else if (Fallen(reading) && retries_ < kMaxRetries) {
     ++retries_;
     hasMove_ = false;
@@ -859,12 +987,15 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     if (lag < kGateStop) stalledSince_ = -1.0;
     else if (stalledSince_ < 0.0) stalledSince_ = reading.time;
     if (move_.keepComOverFeet) {
+      const float lean = BalanceLean(move_, progress_, reading);
+      const float step = kLeanRate * static_cast<float>(dt);
+      balanceLean_ += std::clamp(lean - balanceLean_, -step, step);
       // Integral feedback on the measured CoM keeps the balance goal honest
       // when the model's masses or the servos' sag differ from the plan.
-      glm::vec3 error = FeetCentre(reading) - reading.com;
+      glm::vec3 error = BalancePoint(reading) - reading.com;
       error -= ground_.normal * glm::dot(error, ground_.normal);
       balanceOffset_ += error * static_cast<float>(dt) * 1.5f;
-      const float limit = 0.08f;
+      const float limit = 0.05f;
       if (glm::length(balanceOffset_) > limit) balanceOffset_ *= limit / glm::length(balanceOffset_);
     }
     const bool stalled = stalledSince_ >= 0.0 && reading.time - stalledSince_ > kStallTime;
@@ -898,6 +1029,9 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
       if (planted_[i]) out.gainScale[rig_.end[i]] = kPlantedWristGain;
     }
     trace_.comGoal = PoseCom(goal);
+    trace_.pelvisGoal = goal.pelvisPosition;
+    trace_.pelvisGoalRotation = goal.pelvisRotation;
+    trace_.localGoal = out.local;
     for (int i = 0; i < kLimbCount; ++i) trace_.limbTargets[i] = goal.limbs[i].target;
   }
 

@@ -51,6 +51,9 @@ struct TraceSample {
   std::string move;
   glm::vec3 com{0.0f};
   glm::vec3 comGoal{0.0f};
+  glm::vec3 pelvisGoal{0.0f};
+  glm::quat pelvisGoalRotation{1.0f, 0.0f, 0.0f, 0.0f};
+  std::vector<glm::quat> localGoal;  // the servos' targets, per skeleton joint
   SupportPolygon support;
   float feetDistance = 0.0f;  // CoM ground projection to the feet's soles, m (negative inside)
   std::array<glm::vec3, kLimbCount> limbTargets{};
@@ -99,6 +102,7 @@ class RiseController {
     TrunkPose from, to;
     std::array<LimbMove, kLimbCount> limbs;
     bool keepComOverFeet = false;     // re-centre the pelvis so the CoM stays over the feet
+    std::array<std::array<float, 2>, 2> legPitches{};  // rising: each leg's shin and thigh pitch at the start
   };
 
   // Planning (each returns the next move from the measured state).
@@ -113,6 +117,9 @@ class RiseController {
   // A move on both hands and both feet, all held where they are.
   Move OnAllFours(const BodyReading& reading, const char* name, double duration) const;
   Move PlanRise(const BodyReading& reading);
+  std::array<float, 2> LegPitches(const BodyReading& reading, int leg) const;
+  // The pelvis of a rising move at eased progress e: on the legs straightening from the feet.
+  glm::vec3 RisingPelvis(const Move& move, float e, const BodyReading& reading) const;
   Move PlanStand(const BodyReading& reading);
 
   // Geometry of the measured body.
@@ -122,6 +129,8 @@ class RiseController {
   LimbMove ToePivot(const BodyReading& reading, Limb foot, float heelLift) const;
   glm::vec3 FeetCentre(const BodyReading& reading) const;
   SupportPolygon FeetRegion(const BodyReading& reading) const;
+  // Where Phase 2 keeps the CoM's ground projection.
+  glm::vec3 BalancePoint(const BodyReading& reading) const;
   SupportPolygon SupportRegion(const BodyReading& reading) const;
   glm::vec3 HeadingForward(const BodyReading& reading) const;
 
@@ -142,17 +151,26 @@ class RiseController {
                         const std::array<bool, 2>& bearingHands) const;
 
   // Evaluation of the current move at progress s in [0, 1].
-  PoseGoal GoalAt(const Move& move, float s, const BodyReading& reading) const;
+  // balance: apply Phase 2's balance (lean and slide) to moves that keep the CoM over the feet.
+  PoseGoal GoalAt(const Move& move, float s, const BodyReading& reading, bool balance = true) const;
+  float BalanceLean(const Move& move, float s, const BodyReading& reading) const;
+  void Lean(const Move& move, float s, float lean, PoseGoal& goal) const;
+  bool FeetFlat(const PoseGoal& goal) const;
   glm::vec3 PoseCom(const PoseGoal& goal) const;
+  glm::vec3 PoseCom(const BodyPose& pose) const;
   void EvaluateLimb(const LimbMove& limb, Limb which, float s, const PoseGoal& trunkGoal, LimbGoal& out) const;
   void StartMove(Move move);
   bool Fallen(const BodyReading& reading) const;
+  // Crouched or standing on both feet with the CoM over them (sets the heading).
+  bool OnItsFeet(const BodyReading& reading);
   // Gravity compensation and support forces through the joints (Jacobian
   // transpose): the torque each joint needs to hold its distal part and pass
   // on the ground forces of the supports below it, with the body's weight
   // shared among the planted supports so their centre of pressure is under
   // the CoM. Internal torques only: nothing pushes the body from outside.
   void FeedForward(const BodyReading& reading, std::vector<glm::vec3>& out) const;
+  // Where a planted hand or foot is to press on the ground, for FeedForward.
+  glm::vec3 SupportPoint(const BodyReading& reading, Limb limb) const;
 
   const BipedDef& def_;
   RiseSpec spec_;
@@ -185,6 +203,7 @@ class RiseController {
   bool rollTucked_ = false;
   glm::vec3 heading_{0.0f, 0.0f, 1.0f};
   glm::vec3 balanceOffset_{0.0f};
+  float balanceLean_ = 0.0f;
   std::array<bool, kLimbCount> planted_{};
   TraceSample trace_;
 };

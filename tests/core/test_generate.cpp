@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "core/generate.h"
+#include "core/clip_quality.h"
 #include "core/input_json.h"
 #include "test_support.h"
 
@@ -60,6 +61,32 @@ TEST_CASE("a prone body settles, places its hands and feet and pushes up onto th
   CHECK(pushEnd->com.y > 0.4f);
   // All four limbs bear weight in the bear stance the crawl starts from.
   for (bool touching : pushEnd->touching) CHECK(touching);
+}
+
+TEST_CASE("phase 2: from a deep squat on flat feet the body rises and stands still, upright, feet down") {
+  // Knees 100 deg, ankles at 25 of their 30 deg of dorsiflexion, hips 115 of
+  // 120 deg: a straight-line rise would need more ankle than there is, so
+  // this holds the rise to its leg-angle path and the trunk lean.
+  rise::RiseSpec spec;
+  spec.start.posture = rise::Posture::kCustom;
+  spec.start.rootEulerDeg = {40.0, 0.0, 0.0};
+  spec.start.jointsDeg = {{"thigh_l", {115, 5}}, {"thigh_r", {115, 5}}, {"shin_l", {100}}, {"shin_r", {100}},
+                          {"foot_l", {25, 0}},   {"foot_r", {25, 0}},   {"upper_arm_l", {40, 0}},
+                          {"upper_arm_r", {40, 0}}};
+  spec.maxDurationS = 8.0;
+  const rise::GeneratedClip result = rise::GenerateClip(spec);
+  REQUIRE(result.health.ok);
+  CHECK(result.stood);
+  CHECK(result.retries == 0);
+  CHECK(result.timeToStand < 4.0);
+  std::vector<std::string> phases;
+  for (const rise::PhaseSpan& phase : result.clip.metadata.phases) phases.push_back(phase.name);
+  CHECK(phases == std::vector<std::string>{"settle", "rise", "stand"});
+  const rise::QualityReport quality = rise::MeasureClip(result.clip);
+  CHECK(quality.endsStanding);
+  CHECK(quality.penetrationOk);
+  CHECK(quality.slipOk);
+  CHECK(quality.jumpOk);
 }
 
 TEST_CASE("metadata: phases tile the clip, contacts name effectors, peak torques stay under the caps") {
