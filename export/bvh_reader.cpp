@@ -3,9 +3,11 @@
 #include "export/bvh_reader.h"
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <glm/gtc/quaternion.hpp>
+#include <limits>
 #include <sstream>
 
 namespace rise {
@@ -29,12 +31,25 @@ class Tokens {
     while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
     return std::string_view(text_).substr(start, pos_ - start);
   }
+  // A number token that a float can hold (offsets and channel values become floats).
   bool Number(double& value) {
     const std::string token(Next());
     if (token.empty()) return false;
     char* end = nullptr;
     value = std::strtod(token.c_str(), &end);
-    return end == token.c_str() + token.size();
+    return end == token.c_str() + token.size() && std::isfinite(value) &&
+           std::fabs(value) <= std::numeric_limits<float>::max();
+  }
+  // A whole number from 0 to max.
+  bool Count(double max, double& value) {
+    return Number(value) && value >= 0 && value <= max && value == std::floor(value);
+  }
+  // How many tokens are left, without reading them.
+  size_t Remaining() const {
+    Tokens rest = *this;
+    size_t count = 0;
+    while (!rest.Next().empty()) ++count;
+    return count;
   }
 
  private:
@@ -106,7 +121,7 @@ std::string ParseBvh(const std::string& text, const BvhFormat& format, const std
     } else if (token == "CHANNELS") {
       if (open.empty()) return fail("CHANNELS outside a joint");
       double count;
-      if (!tokens.Number(count) || count < 0 || count > 6) return fail("CHANNELS needs a count from 0 to 6");
+      if (!tokens.Count(6, count)) return fail("CHANNELS needs a count from 0 to 6");
       for (int c = 0; c < static_cast<int>(count); ++c) {
         Channel channel;
         if (!ParseChannel(tokens.Next(), channel))
@@ -121,9 +136,18 @@ std::string ParseBvh(const std::string& text, const BvhFormat& format, const std
   if (!open.empty()) return fail("a joint block is not closed");
 
   double frames = 0.0;
-  if (tokens.Next() != "Frames:" || !tokens.Number(frames) || frames < 0) return fail("MOTION needs 'Frames: <count>'");
+  const double kAnyCount = std::numeric_limits<float>::max();
+  if (tokens.Next() != "Frames:" || !tokens.Count(kAnyCount, frames)) return fail("MOTION needs 'Frames: <count>'");
   if (tokens.Next() != "Frame" || tokens.Next() != "Time:" || !tokens.Number(out.frameTime) || !(out.frameTime > 0)) {
     return fail("MOTION needs 'Frame Time: <seconds>'");
+  }
+  // The frame count is checked against the values actually there before anything is allocated
+  // for it, so a wrong count (or a hostile one) costs no memory.
+  size_t channelCount = 0;
+  for (const Node& node : nodes) channelCount += node.channels.size();
+  if (frames > 0 && channelCount == 0) return fail("MOTION has frames but no joint has CHANNELS");
+  if (frames * static_cast<double>(channelCount) > static_cast<double>(tokens.Remaining())) {
+    return fail("MOTION holds fewer values than Frames x channels");
   }
 
   // Forward kinematics in file axes, converted to rise-gen's world at the end.
@@ -138,7 +162,7 @@ std::string ParseBvh(const std::string& text, const BvhFormat& format, const std
       glm::quat turn(1.0f, 0.0f, 0.0f, 0.0f);
       for (Channel channel : nodes[j].channels) {
         double value;
-        if (!tokens.Number(value)) return fail("MOTION holds fewer values than Frames x channels");
+        if (!tokens.Number(value)) return fail("MOTION holds a value that is not a number a float can hold");
         const float v = static_cast<float>(value);
         switch (channel) {
           case Channel::kXPos:

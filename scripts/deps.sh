@@ -11,6 +11,9 @@ PACKAGES=(cmake g++ make libglm-dev libtinygltf-dev libcli11-dev nlohmann-json3-
 # NodeSource, which bundles npm) is kept rather than replaced by Debian's.
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then PACKAGES+=(nodejs npm); fi
 PACKAGES+=(blender python3-numpy)
+# The fuzz job (scripts/fuzz.sh): clang with libFuzzer, whose runtime Debian ships in
+# libclang-rt-14-dev (only recommended by clang, so named here).
+PACKAGES+=(clang libclang-rt-14-dev)
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

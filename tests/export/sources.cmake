@@ -12,4 +12,5 @@ set(RISE_TEST_EXPORT_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/test_gltf_reader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_bvh_writer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_bvh_reader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_bvh_reader_hostile.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_preview_sheet.cpp)
