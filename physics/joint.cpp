@@ -58,6 +58,29 @@ glm::vec3 AngularImpulse(const Joint& joint, const AngularRows& rows) {
   return impulse;
 }
 
+// The pose-only part of UpdateJointGeometry: rows, their effective masses and the lever arms.
+void UpdateJointRows(Joint& joint, const Body& a, const Body& b) {
+  AngularRows& rows = joint.rows;
+  rows = RowsFor(joint, a, b);
+  const glm::mat3 invInertiaSum = a.invInertiaWorld + b.invInertiaWorld;
+  for (int i = 0; i < rows.lockCount; ++i) rows.lockMass[i] = AngularEffectiveMass(invInertiaSum, rows.lockAxis[i]);
+  for (int i = 0; i < rows.limitCount; ++i) rows.limitMass[i] = AngularEffectiveMass(invInertiaSum, rows.limitAxis[i]);
+  joint.leverA = a.transform.rotation * joint.localAnchorA;
+  joint.leverB = b.transform.rotation * joint.localAnchorB;
+  joint.rowsCurrent = true;
+}
+
+// The motor's error and mass also depend on its target and gains (set between steps) and on h.
+void UpdateMotorRows(Joint& joint, const Body& a, const Body& b, const SolverContext& context) {
+  const AngularRows& rows = joint.rows;
+  if (!joint.motor.enabled || rows.motorCount == 0) return;
+  const glm::quat targetB = a.transform.rotation * joint.localFrameA * joint.motor.target;
+  const glm::vec3 error = RotationVector(b.transform.rotation * joint.localFrameB * glm::conjugate(targetB));
+  for (int i = 0; i < rows.motorCount; ++i) joint.motorError[i] = glm::dot(rows.motorAxis[i], error);
+  joint.motorMass = MotorPartMass(a.invInertiaWorld + b.invInertiaWorld, rows.motorAxis, rows.motorCount,
+                                  MotorGainsOf(joint.motor), context.h);
+}
+
 }  // namespace
 
 Joint MakeJoint(const JointDef& def, const Body& a, const Body& b) {
@@ -108,23 +131,14 @@ void PrepareJoint(Joint& joint, const Body& a, const Body& b, const SolverContex
     joint.motorImpulse = glm::vec3(0.0f);
     joint.motorTorqueWorld = glm::vec3(0.0f);
   }
-  UpdateJointGeometry(joint, a, b, context);
+  // The last position integration of the previous step left the rows at these very poses.
+  if (!joint.rowsCurrent) UpdateJointRows(joint, a, b);
+  UpdateMotorRows(joint, a, b, context);
 }
 
 void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b, const SolverContext& context) {
-  AngularRows& rows = joint.rows;
-  rows = RowsFor(joint, a, b);
-  const glm::mat3 invInertiaSum = a.invInertiaWorld + b.invInertiaWorld;
-  for (int i = 0; i < rows.lockCount; ++i) rows.lockMass[i] = AngularEffectiveMass(invInertiaSum, rows.lockAxis[i]);
-  for (int i = 0; i < rows.limitCount; ++i) rows.limitMass[i] = AngularEffectiveMass(invInertiaSum, rows.limitAxis[i]);
-  joint.leverA = a.transform.rotation * joint.localAnchorA;
-  joint.leverB = b.transform.rotation * joint.localAnchorB;
-  if (joint.motor.enabled && rows.motorCount > 0) {
-    const glm::quat targetB = a.transform.rotation * joint.localFrameA * joint.motor.target;
-    const glm::vec3 error = RotationVector(b.transform.rotation * joint.localFrameB * glm::conjugate(targetB));
-    for (int i = 0; i < rows.motorCount; ++i) joint.motorError[i] = glm::dot(rows.motorAxis[i], error);
-    joint.motorMass = MotorPartMass(invInertiaSum, rows.motorAxis, rows.motorCount, MotorGainsOf(joint.motor), context.h);
-  }
+  UpdateJointRows(joint, a, b);
+  UpdateMotorRows(joint, a, b, context);
 }
 
 void WarmStartJoint(Joint& joint, Body& a, Body& b) {

@@ -117,6 +117,9 @@ struct Joint {
   // one sub-step and the warm start and solve of the next share one evaluation.
   AngularRows rows;
   glm::vec3 leverA{0.0f}, leverB{0.0f};  // world anchor offsets rA, rB from the centres of mass
+  // rows and lever arms were computed from the bodies' present poses: true after every position
+  // integration, so the next step's PrepareJoint reuses them; World::SetTransform clears it.
+  bool rowsCurrent = false;
   float motorError[3] = {};              // c_i of the motor rows (when the motor is enabled), rad
   glm::mat3 motorMass{0.0f};             // MotorPartMass of the motor rows (when enabled)
 };
@@ -131,7 +134,8 @@ glm::quat RelativeRotation(const Joint& joint, const Body& a, const Body& b);
 float AnchorSeparation(const Joint& joint, const Body& a, const Body& b);
 
 // The solver stages every joint type goes through (dispatch in joint.cpp). PrepareJoint ends with
-// UpdateJointGeometry; the solver calls it again after every position integration.
+// UpdateJointGeometry (its pose-only part skipped while rowsCurrent); the solver calls it again
+// after every position integration.
 void PrepareJoint(Joint& joint, const Body& a, const Body& b, const SolverContext& context);
 void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b, const SolverContext& context);
 void WarmStartJoint(Joint& joint, Body& a, Body& b);

@@ -100,6 +100,9 @@ void World::SetTransform(BodyId body, const Transform& transform) {
   b.transform.position = transform.position;
   b.transform.rotation = glm::normalize(transform.rotation);
   UpdateWorldInertia(b);
+  for (Joint& joint : state_.joints) {
+    if (joint.bodyA == body.index || joint.bodyB == body.index) joint.rowsCurrent = false;
+  }
 }
 
 void World::SetLinearVelocity(BodyId body, const glm::vec3& velocity) { BodyAt(body).linearVelocity = velocity; }
