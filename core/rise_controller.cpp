@@ -39,7 +39,7 @@ constexpr float kSquatHandsAhead = 0.38f; // m
 constexpr float kSquatComRatio = 0.6f;     // CoM height in that squat, of the standing CoM height
 // Supporting arms are kept nearly straight (elbow ~15 deg), so the weight goes
 // down the bones instead of through the weak elbow and wrist servos.
-constexpr float kSupportArmReach = 0.985f;  // shoulder-to-wrist, of the arm's reach
+constexpr float kSupportArmReach = 1.0f;  // shoulder-to-wrist, of the arm's reach
 // Planted hands' wrists go soft so the palm lies flat and takes load at its heel.
 constexpr float kPlantedWristGain = 0.15f;
 // Feet at least this far either side of the midline in the crawl, so the
@@ -52,15 +52,22 @@ constexpr float kRiseTriggerDistance = 0.02f;  // m
 // Phase 2's balance feedback: how far the pose's CoM goal moves against the
 // capture point's offset from the feet centre.
 constexpr float kCaptureGain = 1.0f;
+// TrunkForCom's priorities, as weights of its least-squares residuals (per m, rad).
+constexpr float kReachWeight = 30.0f;
+constexpr float kStraightArmWeight = 3.0f;
+constexpr float kComWeight = 1.0f;
+constexpr float kPitchWeight = 0.02f;
 constexpr float kMaxBalanceSlide = 0.1f;  // m the pelvis may slide from its planned place
 constexpr float kMaxBalanceLean = 1.2f;   // rad the trunk may lean forward of its plan
 constexpr float kLeanRate = 0.8f;         // rad/s the balance lean may change
 // The feet walk in while they are farther than this behind the hands (a squat
 // with the hands down has them about this far apart); a step is at most
 // kFootStep long and leans the CoM kFootStepMargin into its triangle first.
-constexpr float kFootWalkDistance = 0.55f;  // m
+constexpr float kFootWalkDistance = 0.85f;  // m
 constexpr float kFootStep = 0.3f;          // m
 constexpr float kFootStepMargin = 0.04f;   // m
+// Between steps the CoM rests this fraction of the way from the hands to the feet.
+constexpr float kFollowFraction = 0.4f;
 
 bool IsArm(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kHandRight; }
 bool IsLeft(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kFootLeft; }
@@ -288,39 +295,88 @@ RiseController::TrunkPose RiseController::TrunkForCom(const glm::vec3& comGoal, 
                                                       const std::array<LimbMove, kLimbCount>& limbs,
                                                       float handReachFraction,
                                                       const std::array<bool, 2>& bearingHands) const {
-  // Hands that support the trunk decide its pitch: the shoulders should sit
-  // handReachFraction of the arm's reach from them (arms nearly straight).
-  glm::vec3 hands(0.0f);
-  int handCount = 0;
-  for (int i = 0; i < 2; ++i) {
-    if (bearingHands[i]) hands += limbs[i].to, ++handCount;
-  }
-  TrunkPose trunk = start;
-  Move probe;
-  probe.limbs = limbs;
-  float pitch = 0.0f;
-  for (int iteration = 0; iteration < 6; ++iteration) {
-    if (handCount > 0) {
-      const glm::vec3 handCentre = hands / static_cast<float>(handCount);
-      float bestCost = 1e9f;
-      for (int k = 0; k <= 48; ++k) {
-        const float candidate = glm::radians(-70.0f + 150.0f * static_cast<float>(k) / 48.0f);
-        PoseGoal goal;
-        goal.pelvisPosition = trunk.pelvis;
-        goal.pelvisRotation = goal.chestRotation = TrunkRotation(forward, candidate);
-        const glm::vec3 shoulders =
-            0.5f * (LimbRoot(def_.skeleton, rig_, goal, Limb::kHandLeft) +
-                    LimbRoot(def_.skeleton, rig_, goal, Limb::kHandRight));
-        const float cost = std::fabs(glm::length(shoulders - handCentre) - handReachFraction * armReach_);
-        if (cost < bestCost) bestCost = cost, pitch = candidate;
-      }
-      trunk.pelvisRotation = trunk.chestRotation = TrunkRotation(forward, pitch);
-    }
-    probe.from = probe.to = trunk;
+  // The trunk (pelvis position and pitch) found by damped Gauss-Newton on the
+  // paper's priorities: first every hand and foot that holds a place reaches
+  // it (the limbs' length limits), then the shoulders sit handReachFraction of
+  // the arm's reach from bearing hands (arms nearly straight carry the weight
+  // in their bones), last the whole-body CoM as close to the goal as that
+  // allows. Planning only from reachable poses is what keeps the servos from
+  // fighting the ground: an out-of-reach goal turns into slipping feet.
+  const glm::vec3 startUp = start.pelvisRotation * kUp;
+  const float startPitch = std::atan2(glm::dot(startUp, kUp), glm::dot(startUp, forward));
+  constexpr int kUnknowns = 4, kResiduals = 3 + 3 * kLimbCount + 2 + 1;
+  using Residuals = std::array<float, kResiduals>;
+  auto trunkOf = [&](const std::array<float, kUnknowns>& x) {
+    TrunkPose trunk;
+    trunk.pelvis = glm::vec3(x[0], x[1], x[2]);
+    trunk.pelvisRotation = trunk.chestRotation = TrunkRotation(forward, x[3]);
+    return trunk;
+  };
+  auto residuals = [&](const std::array<float, kUnknowns>& x) {
+    Move probe;
+    probe.limbs = limbs;
+    probe.from = probe.to = trunkOf(x);
     const PoseGoal goal = GoalAt(probe, 1.0f, BodyReading{});
-    trunk.pelvis += comGoal - PoseCom(goal);
+    const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
+    Residuals r{};
+    const glm::vec3 com = PoseCom(pose) - comGoal;
+    for (int k = 0; k < 3; ++k) r[k] = kComWeight * com[k];
+    for (int i = 0; i < kLimbCount; ++i) {
+      if (limbs[i].mode == LimbMode::kBody) continue;
+      const glm::vec3 miss = pose.worldPositions[rig_.end[i]] - goal.limbs[i].target;
+      for (int k = 0; k < 3; ++k) r[3 + 3 * i + k] = kReachWeight * miss[k];
+    }
+    for (int i = 0; i < 2; ++i) {
+      if (!bearingHands[i]) continue;
+      const float reach = glm::length(LimbRoot(def_.skeleton, rig_, goal, static_cast<Limb>(i)) - goal.limbs[i].target);
+      r[3 + 3 * kLimbCount + i] = kStraightArmWeight * (reach - handReachFraction * armReach_);
+    }
+    r[kResiduals - 1] = kPitchWeight * (x[3] - startPitch);
+    return r;
+  };
+  auto cost = [](const Residuals& r) {
+    float sum = 0.0f;
+    for (float v : r) sum += v * v;
+    return sum;
+  };
+
+  std::array<float, kUnknowns> x{start.pelvis.x, start.pelvis.y, start.pelvis.z, startPitch};
+  Residuals r = residuals(x);
+  float lambda = 1e-3f;
+  for (int iteration = 0; iteration < 25; ++iteration) {
+    std::array<Residuals, kUnknowns> jacobian;
+    for (int u = 0; u < kUnknowns; ++u) {
+      std::array<float, kUnknowns> probe = x;
+      constexpr float kStep = 1e-3f;
+      probe[u] += kStep;
+      const Residuals moved = residuals(probe);
+      for (int k = 0; k < kResiduals; ++k) jacobian[u][k] = (moved[k] - r[k]) / kStep;
+    }
+    glm::mat4 normal(0.0f);
+    glm::vec4 gradient(0.0f);
+    for (int a = 0; a < kUnknowns; ++a) {
+      for (int k = 0; k < kResiduals; ++k) gradient[a] += jacobian[a][k] * r[k];
+      for (int b = 0; b < kUnknowns; ++b) {
+        for (int k = 0; k < kResiduals; ++k) normal[a][b] += jacobian[a][k] * jacobian[b][k];
+      }
+    }
+    bool improved = false;
+    for (int attempt = 0; attempt < 6 && !improved; ++attempt) {
+      glm::mat4 damped = normal;
+      for (int a = 0; a < kUnknowns; ++a) damped[a][a] += lambda * (1.0f + normal[a][a]);
+      const glm::vec4 delta = -(glm::inverse(damped) * gradient);
+      std::array<float, kUnknowns> next = x;
+      for (int a = 0; a < kUnknowns; ++a) next[a] += delta[a];
+      const Residuals trial = residuals(next);
+      if (cost(trial) < cost(r)) {
+        x = next, r = trial, lambda = std::max(1e-5f, lambda * 0.3f), improved = true;
+      } else {
+        lambda *= 10.0f;
+      }
+    }
+    if (!improved) break;
   }
-  return trunk;
+  return trunkOf(x);
 }
 
 // ---------------------------------------------------------------------------
@@ -745,19 +801,23 @@ RiseController::Move RiseController::PlanFootStep(const BodyReading& r) {
     const glm::vec3 comGoal = Project(ground_, glm::vec3(goal.x, 0.0f, goal.y)) + ground_.normal * crawlComHeight_;
     move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
     move.name = "lean";
-    move.duration = 0.9;
+    move.duration = 0.6;
     footLifted_ = true;
   } else {
     // The free foot steps toward the hands, landing on its toes.
     const int end = rig_.end[free];
     const glm::vec3 toe = Project(ground_, r.jointPositions[end] + r.jointRotations[end] * toeLocal_);
-    const float gap = FeetRegion(r).SignedDistance(Ground(r.com));
+    // As far as it takes to bring the feet a squat's distance behind the hands.
+    const glm::vec3 hands = 0.5f * (r.jointPositions[rig_.end[0]] + r.jointPositions[rig_.end[1]]);
+    const BoneBox& box = def_.skeleton.joints[end].box;
+    const glm::vec3 sole = Project(ground_, r.jointPositions[end] + r.jointRotations[end] * box.center);
+    const float behind = glm::dot(Project(ground_, hands) - sole, heading_) - kFootWalkDistance;
     LimbMove& m = move.limbs[free] = HoldLimb(r, freeFoot_, false);
     m.toRotation = FootRotation(heading_, glm::radians(60.0f));
-    m.to = AnkleForToe(toe + heading_ * std::clamp(gap, 0.1f, kFootStep), m.toRotation);
+    m.to = AnkleForToe(toe + heading_ * std::clamp(behind, 0.1f, kFootStep), m.toRotation);
     m.lift = static_cast<float>(spec_.style.stepHeightM);
     move.name = "step";
-    move.duration = 0.8;
+    move.duration = 0.6;
     footLifted_ = false;
     footStepped_ = true;
     freeFoot_ = stance;
@@ -780,26 +840,24 @@ RiseController::Move RiseController::OnAllFours(const BodyReading& r, const char
 }
 
 RiseController::Move RiseController::PlanSitBack(const BodyReading& r) {
-  // With the feet in close behind the hands, the CoM moves back over the feet
-  // into a squat on all four limbs, heels coming down, before a hand lets go.
+  // With the feet in close behind the hands, the CoM moves back toward the
+  // feet, hips low and heels coming down, as far as the hands on the ground
+  // allow (TrunkForCom keeps every limb in reach), before a hand lets go.
   Move move = OnAllFours(r, "sit back", 1.6);
-  for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, glm::radians(15.0f));
-  const glm::vec3 comGoal = FeetCentre(r) + ground_.normal * (kSquatComRatio * standComHeight_);
+  for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, glm::radians(30.0f));
+  const glm::vec3 hands = 0.5f * (r.jointPositions[rig_.end[0]] + r.jointPositions[rig_.end[1]]);
+  const glm::vec3 comGoal = Project(ground_, glm::mix(FeetCentre(r), hands, 0.3f)) + ground_.normal * (0.45f * standComHeight_);
   move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
   satBack_ = true;
   return move;
 }
 
 RiseController::Move RiseController::PlanFollow(const BodyReading& r) {
-  // After a step, on all fours again, the CoM follows the feet by as much as
-  // they came in, so the gap between them closes.
-  Move move = OnAllFours(r, "follow", 0.9);
-  const glm::vec3 feet = FeetCentre(r);
-  glm::vec3 back = feet - r.com;
-  back -= ground_.normal * glm::dot(back, ground_.normal);
-  const float gap = glm::length(back);
-  const glm::vec3 comGoal = Project(ground_, r.com + (gap > 1e-4f ? back / gap : back) * std::min(0.5f * kFootStep, gap)) +
-                            ground_.normal * crawlComHeight_;
+  // After a step, on all fours again, the CoM goes back to the middle of the
+  // four supports, kept nearer the hands, from where either foot can step next.
+  Move move = OnAllFours(r, "follow", 0.6);
+  const glm::vec3 hands = 0.5f * (r.jointPositions[rig_.end[0]] + r.jointPositions[rig_.end[1]]);
+  const glm::vec3 comGoal = Project(ground_, glm::mix(hands, FeetCentre(r), kFollowFraction)) + ground_.normal * crawlComHeight_;
   move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
   footStepped_ = false;
   return move;
