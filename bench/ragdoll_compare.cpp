@@ -8,7 +8,9 @@
 // box corner below y = 0; joint separation = distance between the joint anchor carried by the
 // parent and the one carried by the child.
 //
-// Usage: ragdoll_compare [--reps N] [--engine NAME] [--callgrind]
+// Usage: ragdoll_compare [--reps N] [--engine NAME] [--substeps N] [--callgrind]
+//   --substeps N adds a row "ours_<N>sub": our engine with N sub-steps instead of 4 (what fewer
+//                sub-steps would buy, and cost in quality).
 //   --callgrind  re-runs each engine's timed loop under valgrind's callgrind (collecting only
 //                inside RunSteps) and adds instructions per step; the same figure by hand:
 //   valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*RunSteps*'
@@ -35,9 +37,13 @@ namespace rise::bench {
 
 namespace {
 
+// Sub-steps of the extra "ours_<n>sub" row (--substeps); 0 = no such row.
+int gExtraSubsteps = 0;
+
 class RiseRagdoll final : public RagdollEngine {
  public:
-  RiseRagdoll(const scenes::RagdollScene& scene, float timeStep) : world_(Settings(timeStep)) {
+  RiseRagdoll(const scenes::RagdollScene& scene, float timeStep, int substeps = 0) : world_(Settings(timeStep)) {
+    if (substeps > 0) world_.Settings().substepCount = substeps;
     built_ = scenes::BuildRagdollDrop(scene, world_);
   }
   void Step() override { world_.Step(); }
@@ -60,15 +66,24 @@ std::unique_ptr<RagdollEngine> MakeRiseRagdoll(const scenes::RagdollScene& scene
   return std::make_unique<RiseRagdoll>(scene, timeStep);
 }
 
+std::unique_ptr<RagdollEngine> MakeRiseRagdollExtraSubsteps(const scenes::RagdollScene& scene, float timeStep) {
+  return std::make_unique<RiseRagdoll>(scene, timeStep, gExtraSubsteps);
+}
+
 struct EngineEntry {
-  const char* name;      // as printed and as given to --engine
-  const char* settings;  // printed under the table
+  std::string name;      // as printed and as given to --engine
+  std::string settings;  // printed under the table
   std::unique_ptr<RagdollEngine> (*make)(const scenes::RagdollScene& scene, float timeStep);
 };
 
 std::vector<EngineEntry> Engines() {
   std::vector<EngineEntry> engines = {
       {"ours", "rise physics, WorldSettings defaults: 4 sub-steps, 1 solve + 1 relax each", MakeRiseRagdoll}};
+  if (gExtraSubsteps > 0) {
+    const std::string n = std::to_string(gExtraSubsteps);
+    engines.push_back({"ours_" + n + "sub", "ours with " + n + " sub-steps instead of 4 (--substeps; not the default)",
+                       MakeRiseRagdollExtraSubsteps});
+  }
 #ifdef RISE_BENCH_PEERS
   engines.push_back({"bullet", "Bullet 3.24 float, sequential impulse, 10 iterations, sleeping off", MakeBulletRagdoll});
   engines.push_back({"ode", "ODE 0.16.2 double, quickstep 20 iterations, ERP 0.2, 4 contacts/pair", MakeOdeRagdoll});
@@ -137,13 +152,13 @@ double MedianSeconds(const EngineEntry& entry, const scenes::RagdollScene& scene
 }
 
 // Instructions per step of `engine` under callgrind (0 when valgrind is missing or fails).
-double CallgrindInstructionsPerStep(const char* engine, int steps) {
+double CallgrindInstructionsPerStep(const std::string& engine, int substeps, int steps) {
   char self[4096] = {};
   if (readlink("/proc/self/exe", self, sizeof(self) - 1) <= 0) return 0.0;
   const std::string out = "/tmp/ragdoll_compare." + std::to_string(getpid()) + "." + engine + ".cg";
   const std::string command = "valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*RunSteps*' "
                               "--callgrind-out-file=" + out + " '" + self + "' --engine " + engine +
-                              " --reps 1 --timing-only > /dev/null 2>&1";
+                              " --substeps " + std::to_string(substeps) + " --reps 1 --timing-only > /dev/null 2>&1";
   if (std::system(command.c_str()) != 0) return 0.0;
   std::ifstream file(out);
   std::string line;
@@ -171,12 +186,14 @@ int main(int argc, char** argv) {
       reps = std::max(1, std::atoi(argv[++i]));
     } else if (arg == "--engine" && i + 1 < argc) {
       only = argv[++i];
+    } else if (arg == "--substeps" && i + 1 < argc) {
+      gExtraSubsteps = std::max(0, std::atoi(argv[++i]));
     } else if (arg == "--callgrind") {
       callgrind = true;
     } else if (arg == "--timing-only") {
       timingOnly = true;
     } else {
-      std::fprintf(stderr, "usage: %s [--reps N] [--engine NAME] [--callgrind] [--timing-only]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--reps N] [--engine NAME] [--substeps N] [--callgrind] [--timing-only]\n", argv[0]);
       return 2;
     }
   }
@@ -214,15 +231,15 @@ int main(int argc, char** argv) {
     }
     allFinite = allFinite && quality.finite;
     const double seconds = MedianSeconds(entry, scene, timeStep, steps, reps);
-    const double instructions = callgrind ? CallgrindInstructionsPerStep(entry.name, steps) : 0.0;
+    const double instructions = callgrind ? CallgrindInstructionsPerStep(entry.name, gExtraSubsteps, steps) : 0.0;
     char instructionText[32] = "-";
     if (instructions > 0.0) std::snprintf(instructionText, sizeof(instructionText), "%.0f", instructions);
-    std::printf("%-8s %9.2f %9.0f %12.2f %12.2f %10.4f %10.4f %12s%s\n", entry.name, 1e6 * seconds / steps,
+    std::printf("%-8s %9.2f %9.0f %12.2f %12.2f %10.4f %10.4f %12s%s\n", entry.name.c_str(), 1e6 * seconds / steps,
                 double(steps) * double(timeStep) / seconds, 1000.0 * double(quality.peakPenetration),
                 1000.0 * double(quality.peakSeparation), double(quality.finalPelvisHeight),
                 double(quality.finalMaxSpeed), instructionText, quality.finite ? "" : "  (non-finite state)");
     std::fflush(stdout);
   }
-  for (const EngineEntry& entry : engines) std::printf("  %-8s %s\n", entry.name, entry.settings);
+  for (const EngineEntry& entry : engines) std::printf("  %-8s %s\n", entry.name.c_str(), entry.settings.c_str());
   return allFinite ? 0 : 1;
 }
