@@ -217,7 +217,7 @@ int main(int argc, char** argv) {
 
   std::printf("ragdoll drop: %zu boxes, %zu joints, drop %.1f m, friction %.1f, %d steps of 1/240 s, median of %d\n",
               scene.boxes.size(), scene.joints.size(), double(scene.dropHeight), double(scene.friction), steps, reps);
-  std::printf("%-8s %9s %9s %12s %12s %10s %10s %12s\n", "engine", "us/step", "x_real", "penetr_mm", "joint_sep_mm",
+  std::printf("%-10s %9s %9s %12s %12s %10s %10s %12s\n", "engine", "us/step", "x_real", "penetr_mm", "joint_sep_mm",
               "pelvis_y_m", "max_v_m/s", "instr/step");
   bool allFinite = true;
   for (const EngineEntry& entry : engines) {
@@ -234,12 +234,12 @@ int main(int argc, char** argv) {
     const double instructions = callgrind ? CallgrindInstructionsPerStep(entry.name, gExtraSubsteps, steps) : 0.0;
     char instructionText[32] = "-";
     if (instructions > 0.0) std::snprintf(instructionText, sizeof(instructionText), "%.0f", instructions);
-    std::printf("%-8s %9.2f %9.0f %12.2f %12.2f %10.4f %10.4f %12s%s\n", entry.name.c_str(), 1e6 * seconds / steps,
+    std::printf("%-10s %9.2f %9.0f %12.2f %12.2f %10.4f %10.4f %12s%s\n", entry.name.c_str(), 1e6 * seconds / steps,
                 double(steps) * double(timeStep) / seconds, 1000.0 * double(quality.peakPenetration),
                 1000.0 * double(quality.peakSeparation), double(quality.finalPelvisHeight),
                 double(quality.finalMaxSpeed), instructionText, quality.finite ? "" : "  (non-finite state)");
     std::fflush(stdout);
   }
-  for (const EngineEntry& entry : engines) std::printf("  %-8s %s\n", entry.name.c_str(), entry.settings.c_str());
+  for (const EngineEntry& entry : engines) std::printf("  %-10s %s\n", entry.name.c_str(), entry.settings.c_str());
   return allFinite ? 0 : 1;
 }
