@@ -8,9 +8,10 @@
 // box corner below y = 0; joint separation = distance between the joint anchor carried by the
 // parent and the one carried by the child.
 //
-// Usage: ragdoll_compare [--reps N] [--engine NAME] [--substeps N] [--callgrind]
+// Usage: ragdoll_compare [--reps N] [--engine NAME] [--substeps N] [--direct] [--callgrind]
 //   --substeps N adds a row "ours_<N>sub": our engine with N sub-steps instead of 4 (what fewer
 //                sub-steps would buy, and cost in quality).
+//   --direct     adds the same rows with JointSolver::kDirectTree ("ours_direct", "ours_<N>sub_direct").
 //   --callgrind  re-runs each engine's timed loop under valgrind's callgrind (collecting only
 //                inside RunSteps) and adds instructions per step; the same figure by hand:
 //   valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*RunSteps*'
@@ -39,11 +40,16 @@ namespace {
 
 // Sub-steps of the extra "ours_<n>sub" row (--substeps); 0 = no such row.
 int gExtraSubsteps = 0;
+// Adds rows with the direct joint-tree solver (--direct).
+bool gDirect = false;
 
 class RiseRagdoll final : public RagdollEngine {
  public:
-  RiseRagdoll(const scenes::RagdollScene& scene, float timeStep, int substeps = 0) : world_(Settings(timeStep)) {
+  RiseRagdoll(const scenes::RagdollScene& scene, float timeStep, int substeps = 0,
+              physics::JointSolver jointSolver = physics::JointSolver::kSequentialImpulse)
+      : world_(Settings(timeStep)) {
     if (substeps > 0) world_.Settings().substepCount = substeps;
+    world_.Settings().jointSolver = jointSolver;
     built_ = scenes::BuildRagdollDrop(scene, world_);
   }
   void Step() override { world_.Step(); }
@@ -70,6 +76,14 @@ std::unique_ptr<RagdollEngine> MakeRiseRagdollExtraSubsteps(const scenes::Ragdol
   return std::make_unique<RiseRagdoll>(scene, timeStep, gExtraSubsteps);
 }
 
+std::unique_ptr<RagdollEngine> MakeRiseRagdollDirect(const scenes::RagdollScene& scene, float timeStep) {
+  return std::make_unique<RiseRagdoll>(scene, timeStep, 0, physics::JointSolver::kDirectTree);
+}
+
+std::unique_ptr<RagdollEngine> MakeRiseRagdollExtraSubstepsDirect(const scenes::RagdollScene& scene, float timeStep) {
+  return std::make_unique<RiseRagdoll>(scene, timeStep, gExtraSubsteps, physics::JointSolver::kDirectTree);
+}
+
 struct EngineEntry {
   std::string name;      // as printed and as given to --engine
   std::string settings;  // printed under the table
@@ -83,6 +97,15 @@ std::vector<EngineEntry> Engines() {
     const std::string n = std::to_string(gExtraSubsteps);
     engines.push_back({"ours_" + n + "sub", "ours with " + n + " sub-steps instead of 4 (--substeps; not the default)",
                        MakeRiseRagdollExtraSubsteps});
+  }
+  if (gDirect) {
+    engines.push_back({"ours_direct", "ours with the direct joint-tree solver (--direct; not the default)",
+                       MakeRiseRagdollDirect});
+    if (gExtraSubsteps > 0) {
+      const std::string n = std::to_string(gExtraSubsteps);
+      engines.push_back({"ours_" + n + "sub_direct", "ours with " + n + " sub-steps and the direct joint-tree solver",
+                         MakeRiseRagdollExtraSubstepsDirect});
+    }
   }
 #ifdef RISE_BENCH_PEERS
   engines.push_back({"bullet", "Bullet 3.24 float, sequential impulse, 10 iterations, sleeping off", MakeBulletRagdoll});
@@ -158,7 +181,8 @@ double CallgrindInstructionsPerStep(const std::string& engine, int substeps, int
   const std::string out = "/tmp/ragdoll_compare." + std::to_string(getpid()) + "." + engine + ".cg";
   const std::string command = "valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*RunSteps*' "
                               "--callgrind-out-file=" + out + " '" + self + "' --engine " + engine +
-                              " --substeps " + std::to_string(substeps) + " --reps 1 --timing-only > /dev/null 2>&1";
+                              " --substeps " + std::to_string(substeps) + (gDirect ? " --direct" : "") +
+                              " --reps 1 --timing-only > /dev/null 2>&1";
   if (std::system(command.c_str()) != 0) return 0.0;
   std::ifstream file(out);
   std::string line;
@@ -188,12 +212,14 @@ int main(int argc, char** argv) {
       only = argv[++i];
     } else if (arg == "--substeps" && i + 1 < argc) {
       gExtraSubsteps = std::max(0, std::atoi(argv[++i]));
+    } else if (arg == "--direct") {
+      gDirect = true;
     } else if (arg == "--callgrind") {
       callgrind = true;
     } else if (arg == "--timing-only") {
       timingOnly = true;
     } else {
-      std::fprintf(stderr, "usage: %s [--reps N] [--engine NAME] [--substeps N] [--callgrind] [--timing-only]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--reps N] [--engine NAME] [--substeps N] [--direct] [--callgrind] [--timing-only]\n", argv[0]);
       return 2;
     }
   }
@@ -217,7 +243,7 @@ int main(int argc, char** argv) {
 
   std::printf("ragdoll drop: %zu boxes, %zu joints, drop %.1f m, friction %.1f, %d steps of 1/240 s, median of %d\n",
               scene.boxes.size(), scene.joints.size(), double(scene.dropHeight), double(scene.friction), steps, reps);
-  std::printf("%-10s %9s %9s %12s %12s %10s %10s %12s\n", "engine", "us/step", "x_real", "penetr_mm", "joint_sep_mm",
+  std::printf("%-17s %9s %9s %12s %12s %10s %10s %12s\n", "engine", "us/step", "x_real", "penetr_mm", "joint_sep_mm",
               "pelvis_y_m", "max_v_m/s", "instr/step");
   bool allFinite = true;
   for (const EngineEntry& entry : engines) {
@@ -234,12 +260,12 @@ int main(int argc, char** argv) {
     const double instructions = callgrind ? CallgrindInstructionsPerStep(entry.name, gExtraSubsteps, steps) : 0.0;
     char instructionText[32] = "-";
     if (instructions > 0.0) std::snprintf(instructionText, sizeof(instructionText), "%.0f", instructions);
-    std::printf("%-10s %9.2f %9.0f %12.2f %12.2f %10.4f %10.4f %12s%s\n", entry.name.c_str(), 1e6 * seconds / steps,
+    std::printf("%-17s %9.2f %9.0f %12.2f %12.2f %10.4f %10.4f %12s%s\n", entry.name.c_str(), 1e6 * seconds / steps,
                 double(steps) * double(timeStep) / seconds, 1000.0 * double(quality.peakPenetration),
                 1000.0 * double(quality.peakSeparation), double(quality.finalPelvisHeight),
                 double(quality.finalMaxSpeed), instructionText, quality.finite ? "" : "  (non-finite state)");
     std::fflush(stdout);
   }
-  for (const EngineEntry& entry : engines) std::printf("  %-10s %s\n", entry.name.c_str(), entry.settings.c_str());
+  for (const EngineEntry& entry : engines) std::printf("  %-17s %s\n", entry.name.c_str(), entry.settings.c_str());
   return allFinite ? 0 : 1;
 }

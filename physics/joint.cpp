@@ -113,7 +113,7 @@ float AnchorSeparation(const Joint& joint, const Body& a, const Body& b) {
 }
 
 void PrepareJoint(Joint& joint, const Body& a, const Body& b, const SolverContext& context) {
-  joint.pointMass = PointPartMass(a, b, joint.localAnchorA, joint.localAnchorB);
+  if (!joint.pointInTree) joint.pointMass = PointPartMass(a, b, joint.localAnchorA, joint.localAnchorB);
   if (!context.warmStart) {
     joint.linearImpulse = glm::vec3(0.0f);
     joint.lockImpulse[0] = joint.lockImpulse[1] = 0.0f;
@@ -169,7 +169,9 @@ void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bo
                          useBias);
   }
 
-  SolvePointPart(a, b, joint.leverA, joint.leverB, joint.pointMass, joint.linearImpulse, context, useBias);
+  if (!joint.pointInTree) {
+    SolvePointPart(a, b, joint.leverA, joint.leverB, joint.pointMass, joint.linearImpulse, context, useBias);
+  }
   joint.angularImpulse = AngularImpulse(joint, rows);
 }
 

@@ -111,6 +111,8 @@ struct Joint {
   // warm start need not rebuild the rows.
   glm::vec3 angularImpulse{0.0f};
   glm::mat3 pointMass{0.0f};  // K^-1 of the point part for this step
+  // The point part is solved with the joint forest's direct solve (joint_tree.h), not here.
+  bool pointInTree = false;
 
   // Everything that depends only on the two bodies' poses, refreshed by UpdateJointGeometry
   // whenever they move. Positions change only in the position integration, so the relax pass of

@@ -4,7 +4,18 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
+
 namespace rise::physics {
+
+// How the joints' point parts (the three rows that keep the two anchors together) are solved.
+enum class JointSolver : uint8_t {
+  // One sequential-impulse pass per joint per solve, like every other row (joint.cpp).
+  kSequentialImpulse,
+  // One exact, linear-time solve of all tree-structured point parts together per solve
+  // (Baraff 1996, joint_tree.cpp); a joint that closes a loop keeps the sequential pass.
+  kDirectTree,
+};
 
 // Everything here is read when a step starts, so changing a value between steps is allowed.
 // The defaults are the ones the 15-box ragdoll (scenes/ragdoll_drop) was tuned with: lying with
@@ -35,6 +46,9 @@ struct WorldSettings {
   // are as stiff as the sub-step resolves (the solver caps f at a quarter of the sub-step rate).
   float jointHertz = 240.0f;        // Hz
   float jointDampingRatio = 5.0f;   // dimensionless
+
+  // The default keeps every result bit-identical to the engine the controller was tuned on.
+  JointSolver jointSolver = JointSolver::kSequentialImpulse;
 
   // Contacts are created while the surfaces are closer than this, so a fast body is stopped
   // before it passes into the ground (speculative contacts), m.

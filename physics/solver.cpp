@@ -49,9 +49,18 @@ SolverContext MakeContext(const WorldSettings& settings) {
 }
 
 void PrepareJoints(WorldState& state, const SolverContext& context) {
+  JointTree& tree = state.jointTree;
+  const bool direct = state.settings.jointSolver == JointSolver::kDirectTree;
+  if (tree.active != direct || tree.builtJointCount != int32_t(state.joints.size())) {
+    BuildJointTree(tree, state.joints, int(state.bodies.size()), direct);
+  }
+  bool posesChanged = false;
   for (Joint& joint : state.joints) {
+    posesChanged = posesChanged || !joint.rowsCurrent;
     PrepareJoint(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB], context);
   }
+  // The last position integration factorised at these poses unless a body was moved since.
+  if (tree.active && (posesChanged || !tree.factorCurrent)) FactorJointTree(tree, state.joints, state.bodies);
 }
 
 void IntegrateVelocities(WorldState& state, float h) {
@@ -70,6 +79,12 @@ void Solve(WorldState& state, const SolverContext& context, bool useBias) {
     SolveJoint(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB], context, useBias);
   }
   SolveContacts(state.contacts, state.bodies, state.staticBody, context, useBias);
+  // Last, so the joints' anchors have the final word in every pass: contacts forgive a little
+  // overlap (soft, and the next pass corrects it) where an open joint would show on screen.
+  if (state.jointTree.active) {
+    SolveJointTree(state.jointTree, state.joints, state.bodies, state.staticBody,
+                   useBias ? context.jointSoftness.biasRate : 0.0f);
+  }
 }
 
 // Moves the bodies, then refreshes the joints' pose-dependent rows once for every pass that
@@ -79,6 +94,7 @@ void IntegratePositions(WorldState& state, const SolverContext& context) {
   for (Joint& joint : state.joints) {
     UpdateJointGeometry(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB], context);
   }
+  if (state.jointTree.active) FactorJointTree(state.jointTree, state.joints, state.bodies);
 }
 
 bool IsFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }

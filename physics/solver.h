@@ -5,6 +5,7 @@
 #include "physics/body.h"
 #include "physics/contact.h"
 #include "physics/joint.h"
+#include "physics/joint_tree.h"
 #include "physics/settings.h"
 #include "physics/static_geometry.h"
 
@@ -33,6 +34,7 @@ struct WorldState {
   WorldSettings settings;
   std::vector<Body> bodies;
   std::vector<Joint> joints;
+  JointTree jointTree;                // the joint forest (JointSolver::kDirectTree)
   std::vector<StaticShape> statics;
   std::vector<uint64_t> joinedPairs;  // sorted BodyPairKeys of jointed bodies
   std::vector<Contact> contacts;      // sorted by key

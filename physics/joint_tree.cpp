@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: MIT
+// Direct solve of the joints' point parts over the joint forest (Baraff, "Linear-Time Dynamics
+// using Lagrange Multipliers", SIGGRAPH 1996), used when WorldSettings::jointSolver is kDirectTree.
+//
+// Why: a sequential-impulse pass fixes one joint at a time, so along a 15-body chain with
+// heavy and light bodies a pass leaves most of the error where it was, and the ragdoll's anchors
+// separate unless many sub-steps are taken. Solving all point rows together is exact in one pass.
+//
+// The system. Body i has velocity V_i = (v_i, w_i) and mass M_i = diag(m_i 1, I_i). Joint j joins
+// child c and parent p with anchor offsets r_c, r_p (R = [r]x, so R w = r x w and R^T = -R):
+//   C_j = (x_c + r_c) - (x_p + r_p),  Cdot_j = G_c V_c + G_p V_p,  G_c = [1, -R_c],  G_p = -[1, -R_p].
+// (When the child is the joint's body A both G change sign; `sign` folds that in.) One solve
+// finds the velocity change dV and impulses lambda with M dV = G^T lambda and G (V + dV) = -b,
+// b = Cdot-free bias (biasRate C in the biased solve, 0 in the relax). As a symmetric system:
+//   [M  G^T] [dV]   [ 0           ]
+//   [G   0 ] [ y] = [-(G V + b)   ],   lambda = -y.
+// Ordering the unknowns leaves first (child body, then its joint, then the parent body, ...)
+// makes the elimination fill-free, so the LDL^T factorisation costs O(n) in 6x6 and 3x3 blocks:
+//   leaf to root, for each joint j with child c:
+//     D_c^-1 (6x6): M_c^-1 for a leaf; else the inverse of D_c = M_c + sum over c's child joints k
+//                   of G_ck^T S_k^-1 G_ck (the articulated mass of c's subtree), by a Schur
+//                   complement of its 3x3 blocks;
+//     L_cj = D_c^-1 G_c^T (6x3, kept as lowerLinear/lowerAngular),
+//     S_j  = G_c L_cj  (3x3; for a leaf child: m^-1 1 - R I^-1 R, the usual point-part K),
+//     D_j  = -S_j,  and the parent gets  D_p += G_p^T S_j^-1 G_p = [[S^-1, -S^-1 R_p], [R_p S^-1, -R_p S^-1 R_p]].
+// Solve: forward (leaf to root) x_j = rhs_j - L_cj^T x_c, x_p -= L_jp^T x_j with L_jp = S_j^-1 [1, -R_p];
+// diagonal x_i = D_i^-1 x_i; backward (root to leaf) x_j -= L_jp x_p, x_c -= L_cj x_j.
+// The body part of x is dV; adding it to the velocities applies all joint impulses at once.
+//
+// Factorising needs the poses, so the solver refactorises after every position integration,
+// exactly when the joints' lever arms are refreshed: the relax pass, the next warm start and the
+// next biased solve then use the same rows that were factorised. No softness: an exact solve
+// needs no regularisation, the bias only corrects drift and the relax pass removes its velocity.
+#include "physics/joint_tree.h"
+
+#include "base/assert.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/matrix.hpp>
+
+#include <numeric>
+
+namespace rise::physics {
+
+namespace {
+
+int32_t FindRoot(std::vector<int32_t>& parent, int32_t i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+glm::mat3 WorldInertia(const Body& body) {
+  const glm::mat3 r = glm::mat3_cast(body.transform.rotation);
+  glm::mat3 scaled = r;
+  scaled[0] *= body.inertiaLocal.x;
+  scaled[1] *= body.inertiaLocal.y;
+  scaled[2] *= body.inertiaLocal.z;
+  return scaled * glm::transpose(r);
+}
+
+// Lever arms of a link's child and parent (the joint's are stored for its bodies A and B).
+const glm::vec3& ChildLever(const JointTreeLink& link, const Joint& joint) {
+  return link.sign > 0.0f ? joint.leverB : joint.leverA;
+}
+const glm::vec3& ParentLever(const JointTreeLink& link, const Joint& joint) {
+  return link.sign > 0.0f ? joint.leverA : joint.leverB;
+}
+
+}  // namespace
+
+void BuildJointTree(JointTree& tree, std::vector<Joint>& joints, int bodyCount, bool active) {
+  tree = JointTree{};
+  tree.active = active;
+  tree.builtJointCount = int32_t(joints.size());
+  for (Joint& joint : joints) joint.pointInTree = false;
+  if (!active) return;
+
+  // Union-find over the bodies and the world (node bodyCount): creation order decides which
+  // joint of a loop is left to the sequential pass.
+  const int32_t world = bodyCount;
+  std::vector<int32_t> component(size_t(bodyCount) + 1);
+  std::iota(component.begin(), component.end(), 0);
+  std::vector<std::vector<int32_t>> adjacent(size_t(bodyCount) + 1);  // joint indices, creation order
+  for (int32_t j = 0; j < int32_t(joints.size()); ++j) {
+    const int32_t a = joints[j].bodyA >= 0 ? joints[j].bodyA : world;
+    const int32_t b = joints[j].bodyB;
+    const int32_t ra = FindRoot(component, a);
+    const int32_t rb = FindRoot(component, b);
+    if (ra == rb) continue;
+    component[rb] = ra;
+    joints[j].pointInTree = true;
+    adjacent[a].push_back(j);
+    adjacent[b].push_back(j);
+  }
+
+  // Breadth first from the world, then from the lowest-index body of every other tree, so each
+  // link is listed before the links below it.
+  std::vector<bool> visited(size_t(bodyCount) + 1, false);
+  std::vector<int32_t> queue;
+  auto visit = [&](int32_t root) {
+    visited[root] = true;
+    queue.assign(1, root);
+    for (size_t head = 0; head < queue.size(); ++head) {
+      const int32_t node = queue[head];
+      for (int32_t j : adjacent[node]) {
+        const Joint& joint = joints[j];
+        const int32_t a = joint.bodyA >= 0 ? joint.bodyA : world;
+        const int32_t other = a == node ? joint.bodyB : a;
+        if (visited[other]) continue;
+        visited[other] = true;
+        queue.push_back(other);
+        JointTreeLink link;
+        link.joint = j;
+        link.parent = node == world ? -1 : node;
+        link.child = other;
+        link.sign = other == joint.bodyB ? 1.0f : -1.0f;
+        tree.links.push_back(link);
+      }
+    }
+  };
+  visit(world);
+  for (int32_t body = 0; body < bodyCount; ++body) {
+    if (!visited[body] && !adjacent[body].empty()) visit(body);
+  }
+
+  tree.bodySlot.assign(size_t(bodyCount), -1);
+  std::vector<bool> inTree(size_t(bodyCount), false);
+  for (const JointTreeLink& link : tree.links) {
+    inTree[link.child] = true;
+    if (link.parent < 0) continue;
+    inTree[link.parent] = true;
+    if (tree.bodySlot[link.parent] < 0) {
+      tree.bodySlot[link.parent] = int32_t(tree.inverses.size());
+      tree.inverses.emplace_back();
+    }
+  }
+  for (JointTreeLink& link : tree.links) link.childSlot = tree.bodySlot[link.child];
+  std::vector<bool> isChild(size_t(bodyCount), false);
+  for (const JointTreeLink& link : tree.links) isChild[link.child] = true;
+  for (int32_t body = 0; body < bodyCount; ++body) {
+    if (inTree[body]) tree.treeBodies.push_back(body);
+    if (inTree[body] && !isChild[body] && tree.bodySlot[body] >= 0) tree.rootBodies.push_back(body);
+  }
+  tree.scratchA.resize(tree.inverses.size());
+  tree.scratchB.resize(tree.inverses.size());
+  tree.scratchC.resize(tree.inverses.size());
+  tree.deltaV.assign(size_t(bodyCount), glm::vec3(0.0f));
+  tree.deltaW.assign(size_t(bodyCount), glm::vec3(0.0f));
+}
+
+void FactorJointTree(JointTree& tree, const std::vector<Joint>& joints, const std::vector<Body>& bodies) {
+  // D of every body with links below it starts as its own mass.
+  for (int32_t body : tree.treeBodies) {
+    const int32_t slot = tree.bodySlot[body];
+    if (slot < 0) continue;
+    tree.scratchA[slot] = glm::mat3(bodies[body].mass);
+    tree.scratchB[slot] = glm::mat3(0.0f);
+    tree.scratchC[slot] = WorldInertia(bodies[body]);
+  }
+
+  auto invert = [&tree](int32_t slot) {
+    // Schur complement of the linear block: D^-1 = [[A^-1 + X T X^T, -X T], [-T X^T, T]] with
+    // X = A^-1 B and T = (C - B^T X)^-1.
+    const glm::mat3 aInverse = glm::inverse(tree.scratchA[slot]);
+    const glm::mat3 x = aInverse * tree.scratchB[slot];
+    const glm::mat3 t = glm::inverse(tree.scratchC[slot] - glm::transpose(tree.scratchB[slot]) * x);
+    JointTreeInverse& inverse = tree.inverses[slot];
+    inverse.coupling = -(x * t);
+    inverse.linear = aInverse - inverse.coupling * glm::transpose(x);
+    inverse.angular = t;
+  };
+
+  for (auto it = tree.links.rbegin(); it != tree.links.rend(); ++it) {
+    JointTreeLink& link = *it;
+    const Joint& joint = joints[link.joint];
+    const Body& child = bodies[link.child];
+    const glm::mat3 r = SkewMatrix(ChildLever(link, joint));
+    if (link.childSlot < 0) {
+      link.lowerLinear = glm::mat3(child.invMass);
+      link.lowerAngular = child.invInertiaWorld * r;
+    } else {
+      invert(link.childSlot);  // every link below the child came earlier in this loop
+      const JointTreeInverse& inverse = tree.inverses[link.childSlot];
+      link.lowerLinear = inverse.linear + inverse.coupling * r;
+      link.lowerAngular = glm::transpose(inverse.coupling) + inverse.angular * r;
+    }
+    link.invMass = glm::inverse(link.lowerLinear - r * link.lowerAngular);
+    if (link.parent < 0) continue;
+    const int32_t parentSlot = tree.bodySlot[link.parent];
+    const glm::mat3 rp = SkewMatrix(ParentLever(link, joint));
+    const glm::mat3 sr = link.invMass * rp;
+    tree.scratchA[parentSlot] += link.invMass;
+    tree.scratchB[parentSlot] -= sr;
+    tree.scratchC[parentSlot] -= rp * sr;
+  }
+  for (int32_t body : tree.rootBodies) invert(tree.bodySlot[body]);
+  tree.factorCurrent = true;
+}
+
+void SolveJointTree(JointTree& tree, std::vector<Joint>& joints, std::vector<Body>& bodies, const Body& staticBody,
+                    float biasRate) {
+  RISE_ASSERT_MSG(tree.factorCurrent, "the joint tree must be factorised at the present poses");
+  for (int32_t body : tree.treeBodies) {
+    tree.deltaV[body] = glm::vec3(0.0f);
+    tree.deltaW[body] = glm::vec3(0.0f);
+  }
+
+  // Forward substitution, leaf to root; the right-hand side is each joint's velocity error.
+  for (auto it = tree.links.rbegin(); it != tree.links.rend(); ++it) {
+    JointTreeLink& link = *it;
+    const Joint& joint = joints[link.joint];
+    const Body& a = joint.bodyA >= 0 ? bodies[joint.bodyA] : staticBody;
+    const Body& b = bodies[joint.bodyB];
+    glm::vec3 error = PointVelocity(b, joint.leverB) - PointVelocity(a, joint.leverA);
+    if (biasRate > 0.0f) {
+      error += biasRate * ((b.transform.position + joint.leverB) - (a.transform.position + joint.leverA));
+    }
+    link.x = -link.sign * error - (tree.deltaV[link.child] * link.lowerLinear + tree.deltaW[link.child] * link.lowerAngular);
+    if (link.parent < 0) continue;
+    const glm::vec3 s = link.invMass * link.x;
+    tree.deltaV[link.parent] -= s;
+    tree.deltaW[link.parent] -= glm::cross(ParentLever(link, joint), s);
+  }
+
+  // Diagonal and backward substitution, root to leaf.
+  auto applyInverse = [&tree](int32_t slot, int32_t body) {
+    const JointTreeInverse& inverse = tree.inverses[slot];
+    const glm::vec3 v = tree.deltaV[body];
+    const glm::vec3 w = tree.deltaW[body];
+    tree.deltaV[body] = inverse.linear * v + inverse.coupling * w;
+    tree.deltaW[body] = v * inverse.coupling + inverse.angular * w;
+  };
+  for (int32_t body : tree.rootBodies) applyInverse(tree.bodySlot[body], body);
+  for (JointTreeLink& link : tree.links) {
+    Joint& joint = joints[link.joint];
+    glm::vec3 y = link.x;
+    if (link.parent >= 0) {
+      y += tree.deltaV[link.parent] - glm::cross(ParentLever(link, joint), tree.deltaW[link.parent]);
+    }
+    link.x = -(link.invMass * y);
+    joint.linearImpulse -= link.sign * link.x;  // lambda = -x, on the child; the joint's is on B
+    if (link.childSlot >= 0) applyInverse(link.childSlot, link.child);
+    tree.deltaV[link.child] -= link.lowerLinear * link.x;
+    tree.deltaW[link.child] -= link.lowerAngular * link.x;
+  }
+
+  for (int32_t body : tree.treeBodies) {
+    bodies[body].linearVelocity += tree.deltaV[body];
+    bodies[body].angularVelocity += tree.deltaW[body];
+  }
+}
+
+}  // namespace rise::physics
