@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Joints: pendulum period, hanging chain, limits under load, PD motor.
 #include "physics/world.h"
+#include "physics/joint_solver_tags.h"
 #include "test_support.h"
 
 #include <glm/geometric.hpp>
@@ -33,7 +34,9 @@ struct HingedRod {
   static constexpr float kMass = 2.0f;
   static constexpr float kHalfLength = 0.25f;
 
-  explicit HingedRod(const MotorDef& motor = MotorDef{}, bool limits = false, AngleRange range = {}) {
+  explicit HingedRod(const WorldSettings& settings, const MotorDef& motor = MotorDef{}, bool limits = false,
+                     AngleRange range = {})
+      : world(settings) {
     rod = AddBox(world, glm::vec3(0.0f, 1.0f, kHalfLength), glm::vec3(0.03f, 0.03f, kHalfLength), kMass);
     JointDef def;
     def.type = JointType::kHinge;
@@ -53,8 +56,8 @@ struct HingedRod {
 }  // namespace
 
 TEST_SUITE("physics.joint") {
-  TEST_CASE("a hinge pendulum swings with period 2 pi sqrt(L / g)") {
-    World world;
+  TEST_CASE_TEMPLATE("a hinge pendulum swings with period 2 pi sqrt(L / g)", T, RISE_JOINT_SOLVERS) {
+    World world(rise::test::WithJointSolver<T>());
     const float length = 1.0f;
     const float amplitude = 5.0f * kDegree;
     const glm::vec3 pivot(0.0f, 2.0f, 0.0f);
@@ -85,8 +88,8 @@ TEST_SUITE("physics.joint") {
     CHECK(std::fabs(period - expected) / expected < 0.01);
   }
 
-  TEST_CASE("a 15-link hanging chain stays connected and calm after a kick") {
-    World world;
+  TEST_CASE_TEMPLATE("a 15-link hanging chain stays connected and calm after a kick", T, RISE_JOINT_SOLVERS) {
+    World world(rise::test::WithJointSolver<T>());
     const int links = 15;
     const float halfLength = 0.05f;
     const glm::vec3 top(0.0f, 2.0f, 0.0f);
@@ -119,8 +122,8 @@ TEST_SUITE("physics.joint") {
     CHECK(maxEnergy - e0 <= 0.01 * kickEnergy);
   }
 
-  TEST_CASE("a hinge limit holds within 1 deg under gravity and a torque pushing past it") {
-    HingedRod rig(MotorDef{}, true, AngleRange{-0.3f, 0.3f});
+  TEST_CASE_TEMPLATE("a hinge limit holds within 1 deg under gravity and a torque pushing past it", T, RISE_JOINT_SOLVERS) {
+    HingedRod rig(rise::test::WithJointSolver<T>(), MotorDef{}, true, AngleRange{-0.3f, 0.3f});
     float maxAngle = -1.0f;
     for (int i = 0; i < 240 * 2; ++i) {
       rig.world.ApplyTorque(rig.rod, glm::vec3(20.0f, 0.0f, 0.0f));
@@ -132,7 +135,7 @@ TEST_SUITE("physics.joint") {
     CHECK(maxAngle > 0.3f - kDegree);
   }
 
-  TEST_CASE("universal and ball limits hold within 1 deg under torques pushing past them") {
+  TEST_CASE_TEMPLATE("universal and ball limits hold within 1 deg under torques pushing past them", T, RISE_JOINT_SOLVERS) {
     struct Case {
       JointType type;
       glm::vec3 torque;
@@ -145,7 +148,7 @@ TEST_SUITE("physics.joint") {
     for (const Case& c : cases) {
       WorldSettings settings;
       settings.gravity = glm::vec3(0.0f);
-      World world(settings);
+      World world(rise::test::WithJointSolver<T>(settings));
       const BodyId rod = AddBox(world, glm::vec3(0.25f, 0.0f, 0.0f), glm::vec3(0.25f, 0.04f, 0.04f), 2.0f);
       JointDef def;
       def.type = c.type;
@@ -183,7 +186,7 @@ TEST_SUITE("physics.joint") {
     }
   }
 
-  TEST_CASE("a PD motor reaches its target within 2 deg and reports the holding torque") {
+  TEST_CASE_TEMPLATE("a PD motor reaches its target within 2 deg and reports the holding torque", T, RISE_JOINT_SOLVERS) {
     MotorDef motor;
     motor.enabled = true;
     const float target = -0.5f;  // rod raised 0.5 rad above horizontal, against gravity
@@ -191,7 +194,7 @@ TEST_SUITE("physics.joint") {
     motor.stiffness = 400.0f;
     motor.damping = 40.0f;
     motor.maxTorque = 100.0f;
-    HingedRod rig(motor);
+    HingedRod rig(rise::test::WithJointSolver<T>(), motor);
     for (int i = 0; i < 240 * 3; ++i) rig.world.Step();
     const float gravityTorque = HingedRod::kMass * 9.81f * HingedRod::kHalfLength * std::cos(rig.Angle());
     const glm::vec3 torque = rig.world.GetMotorTorque(rig.hinge);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // World: determinism, the ragdoll drop, collision filtering, applied forces, health status.
 #include "physics/world.h"
+#include "physics/joint_solver_tags.h"
 #include "scenes/ragdoll_drop.h"
 #include "test_support.h"
 
@@ -46,10 +47,10 @@ float LowestCorner(const World& world, BodyId body) {
 }  // namespace
 
 TEST_SUITE("physics.world") {
-  TEST_CASE("two runs of the ragdoll drop are bit-identical") {
+  TEST_CASE_TEMPLATE("two runs of the ragdoll drop are bit-identical", T, RISE_JOINT_SOLVERS) {
     const scenes::RagdollScene scene = scenes::MakeRagdollDropScene();
-    World first;
-    World second;
+    World first(rise::test::WithJointSolver<T>());
+    World second(rise::test::WithJointSolver<T>());
     scenes::BuildRagdollDrop(scene, first);
     scenes::BuildRagdollDrop(scene, second);
     for (int i = 0; i < 240 * 2; ++i) {
@@ -61,14 +62,14 @@ TEST_SUITE("physics.world") {
     REQUIRE(a.size() == b.size());
     CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
     // The scene did move, so the comparison is not between two resting initial states.
-    World fresh;
+    World fresh(rise::test::WithJointSolver<T>());
     scenes::BuildRagdollDrop(scene, fresh);
     CHECK(std::memcmp(a.data(), Snapshot(fresh).data(), a.size() * sizeof(float)) != 0);
   }
 
-  TEST_CASE("the 15-box ragdoll dropped from 1 m settles with no box deeper than 1 cm") {
+  TEST_CASE_TEMPLATE("the 15-box ragdoll dropped from 1 m settles with no box deeper than 1 cm", T, RISE_JOINT_SOLVERS) {
     const scenes::RagdollScene scene = scenes::MakeRagdollDropScene();
-    World world;
+    World world(rise::test::WithJointSolver<T>());
     const scenes::BuiltRagdoll ragdoll = scenes::BuildRagdollDrop(scene, world);
     REQUIRE(ragdoll.bodies.size() == 15);
     float totalMass = 0.0f;
@@ -100,8 +101,8 @@ TEST_SUITE("physics.world") {
     CHECK(groundForce == doctest::Approx(totalMass * 9.81f).epsilon(0.02));
   }
 
-  TEST_CASE("jointed bodies do not collide; category and mask bits filter pairs") {
-    World world;
+  TEST_CASE_TEMPLATE("jointed bodies do not collide; category and mask bits filter pairs", T, RISE_JOINT_SOLVERS) {
+    World world(rise::test::WithJointSolver<T>());
     world.AddStaticPlane(PlaneShape{}, 0.6f);
     BodyDef def;
     def.box.halfExtents = glm::vec3(0.2f);
