@@ -31,14 +31,24 @@ constexpr double kStandHold = 1.2;          // s
 constexpr float kGateError = 0.06f;         // m: full speed below this
 constexpr float kGateStop = 0.20f;          // m: slowest pace at and above this
 constexpr double kStallTime = 1.5;        // s a move may lag beyond kGateStop before it is re-planned
-constexpr int kMaxCrawlSteps = 16;
+constexpr int kMaxCrawlSteps = 24;
+// A limb lifts only with the CoM this far inside the other three's support;
+// the shift before it aims kShiftMargin inside, and is tried this many times.
+constexpr float kLiftMargin = 0.015f;  // m
+constexpr float kShiftMargin = 0.04f;  // m
+constexpr int kMaxShiftTries = 2;
+constexpr float kHandLineMargin = 0.15f;  // m the CoM stays behind the hands on hands and feet
+constexpr float kReachTolerance = 0.01f;  // m a planned limb may miss its place by
+constexpr float kLandedClearance = 0.02f;  // m above the ground a placed hand or foot counts as down
+// Phase 2 starts once the CoM's ground projection is this far inside the feet.
+constexpr float kRiseMargin = 0.02f;  // m
 // Crawl geometry: how far a hand moves per step, and how far ahead of the feet
 // the hands rest in a squat with the CoM over the feet.
 constexpr float kHandStep = 0.25f;        // m
 constexpr float kSquatHandsAhead = 0.38f; // m
 constexpr float kSquatComRatio = 0.6f;     // CoM height in that squat, of the standing CoM height
-// Supporting arms are kept nearly straight (elbow ~15 deg), so the weight goes
-// down the bones instead of through the weak elbow and wrist servos.
+// Supporting arms are kept straight, so the weight goes down the bones and
+// into the elbow's limit instead of through the weak elbow servo.
 constexpr float kSupportArmReach = 1.0f;  // shoulder-to-wrist, of the arm's reach
 // Planted hands' wrists go soft so the palm lies flat and takes load at its heel.
 constexpr float kPlantedWristGain = 0.15f;
@@ -46,28 +56,28 @@ constexpr float kPlantedWristGain = 0.15f;
 // triangle of both feet and one hand contains the CoM with a small lean.
 constexpr float kCrawlHalfStance = 0.26f;  // m
 constexpr int kMaxRetries = 4;
-// Phase 2 starts once the CoM's ground projection is this close to the feet's
-// soles (negative: inside); the rise's balance loop centres it from there.
-constexpr float kRiseTriggerDistance = 0.02f;  // m
 // Phase 2's balance feedback: how far the pose's CoM goal moves against the
 // capture point's offset from the feet centre.
 constexpr float kCaptureGain = 1.0f;
-// TrunkForCom's priorities, as weights of its least-squares residuals (per m, rad).
+// PlanTrunk's priorities, as weights of its least-squares residuals (per m, rad).
 constexpr float kReachWeight = 30.0f;
 constexpr float kStraightArmWeight = 3.0f;
 constexpr float kComWeight = 1.0f;
+constexpr float kComHeightShare = 0.2f;  // of kComWeight, for the CoM's height
 constexpr float kPitchWeight = 0.02f;
+constexpr float kMaxHeelLift = 1.2f;  // rad a foot on its toes may lift its heel
+// CoM feedback on hands and feet: proportional gain, integral gain (1/s), integral bound.
+constexpr float kCrawlComGain = 0.5f;
+constexpr float kCrawlComIntegral = 1.0f;
+constexpr float kMaxCrawlOffset = 0.06f;  // m
 constexpr float kMaxBalanceSlide = 0.1f;  // m the pelvis may slide from its planned place
 constexpr float kMaxBalanceLean = 1.2f;   // rad the trunk may lean forward of its plan
 constexpr float kLeanRate = 0.8f;         // rad/s the balance lean may change
-// The feet walk in while they are farther than this behind the hands (a squat
-// with the hands down has them about this far apart); a step is at most
-// kFootStep long and leans the CoM kFootStepMargin into its triangle first.
+// The feet walk in while the hands are farther than this ahead of them (from
+// nearer, a foot can hardly come further under a body bent at the hips); a
+// foot step is at most kFootStep long.
 constexpr float kFootWalkDistance = 0.85f;  // m
 constexpr float kFootStep = 0.3f;          // m
-constexpr float kFootStepMargin = 0.04f;   // m
-// Between steps the CoM rests this fraction of the way from the hands to the feet.
-constexpr float kFollowFraction = 0.4f;
 
 bool IsArm(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kHandRight; }
 bool IsLeft(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kFootLeft; }
@@ -88,6 +98,27 @@ glm::quat HeadingRotation(const glm::vec3& forward) {
 // Rotation with the given images of +X and +Y (both unit, orthogonal).
 glm::quat FromAxes(const glm::vec3& x, const glm::vec3& y) {
   return glm::normalize(glm::quat_cast(glm::mat3(x, y, glm::cross(x, y))));
+}
+
+// Solves the n x n system a x = b (a symmetric positive definite) by Cholesky.
+std::array<float, 5> SolveSymmetric(std::array<std::array<float, 5>, 5> a, std::array<float, 5> b, int n) {
+  for (int j = 0; j < n; ++j) {
+    for (int k = 0; k < j; ++k) a[j][j] -= a[j][k] * a[j][k];
+    a[j][j] = std::sqrt(std::max(a[j][j], 1e-12f));
+    for (int i = j + 1; i < n; ++i) {
+      for (int k = 0; k < j; ++k) a[i][j] -= a[i][k] * a[j][k];
+      a[i][j] /= a[j][j];
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < i; ++k) b[i] -= a[i][k] * b[k];
+    b[i] /= a[i][i];
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    for (int k = i + 1; k < n; ++k) b[i] -= a[k][i] * b[k];
+    b[i] /= a[i][i];
+  }
+  return b;
 }
 
 float Blend(float s, float delay, float span) { return Ease((s - delay) / std::max(span, 1e-3f)); }
@@ -290,46 +321,52 @@ glm::vec3 RiseController::PoseCom(const BodyPose& pose) const {
   return sum / totalMass_;
 }
 
-RiseController::TrunkPose RiseController::TrunkForCom(const glm::vec3& comGoal, const glm::vec3& forward,
-                                                      const TrunkPose& start,
-                                                      const std::array<LimbMove, kLimbCount>& limbs,
-                                                      float handReachFraction,
-                                                      const std::array<bool, 2>& bearingHands) const {
-  // The trunk (pelvis position and pitch) found by damped Gauss-Newton on the
-  // paper's priorities: first every hand and foot that holds a place reaches
-  // it (the limbs' length limits), then the shoulders sit handReachFraction of
-  // the arm's reach from bearing hands (arms nearly straight carry the weight
-  // in their bones), last the whole-body CoM as close to the goal as that
-  // allows. Planning only from reachable poses is what keeps the servos from
-  // fighting the ground: an out-of-reach goal turns into slipping feet.
-  const glm::vec3 startUp = start.pelvisRotation * kUp;
-  const float startPitch = std::atan2(glm::dot(startUp, kUp), glm::dot(startUp, forward));
-  constexpr int kUnknowns = 4, kResiduals = 3 + 3 * kLimbCount + 2 + 1;
+void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::array<bool, 2>& bearingHands,
+                               bool freeHeels) const {
+  // The trunk (pelvis position and pitch, and with freeHeels the heel lift of
+  // feet pivoting on their toes) found by damped Gauss-Newton on the paper's
+  // priorities: first every hand and foot that holds a place reaches it (the
+  // limbs' length limits), then the shoulders sit an arm's reach from bearing
+  // hands (straight arms carry the weight in their bones), last the whole-body
+  // CoM as close to the goal as that allows. Planning only reachable poses is
+  // what keeps the servos from fighting the ground: an out-of-reach goal
+  // turns into slipping feet and buckling arms.
+  const glm::vec3 startUp = move.from.pelvisRotation * kUp;
+  const float startPitch = std::atan2(glm::dot(startUp, kUp), glm::dot(startUp, heading_));
+  constexpr int kUnknowns = 5, kResiduals = 3 + 3 * kLimbCount + 2 + 1;
+  using Unknowns = std::array<float, kUnknowns>;
   using Residuals = std::array<float, kResiduals>;
-  auto trunkOf = [&](const std::array<float, kUnknowns>& x) {
-    TrunkPose trunk;
-    trunk.pelvis = glm::vec3(x[0], x[1], x[2]);
-    trunk.pelvisRotation = trunk.chestRotation = TrunkRotation(forward, x[3]);
-    return trunk;
+  std::vector<int> heels;
+  for (int i = 2; i < 4; ++i) {
+    if (freeHeels && move.limbs[i].mode == LimbMode::kToePivot) heels.push_back(i);
+  }
+  auto apply = [&](const Unknowns& x, Move& probe) {
+    probe.to.pelvis = glm::vec3(x[0], x[1], x[2]);
+    probe.to.pelvisRotation = probe.to.chestRotation = TrunkRotation(heading_, x[3]);
+    for (int i : heels) probe.limbs[i].toRotation = FootRotation(heading_, std::clamp(x[4], 0.0f, kMaxHeelLift));
   };
-  auto residuals = [&](const std::array<float, kUnknowns>& x) {
-    Move probe;
-    probe.limbs = limbs;
-    probe.from = probe.to = trunkOf(x);
+  auto residuals = [&](const Unknowns& x) {
+    Move probe = move;
+    apply(x, probe);
+    probe.from = probe.to;
     const PoseGoal goal = GoalAt(probe, 1.0f, BodyReading{});
     const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
     Residuals r{};
+    // The CoM's height matters less than where it is over the ground: a lower
+    // or higher trunk is how far-placed hands and feet are reached.
     const glm::vec3 com = PoseCom(pose) - comGoal;
-    for (int k = 0; k < 3; ++k) r[k] = kComWeight * com[k];
+    const float up = glm::dot(com, ground_.normal);
+    const glm::vec3 along = com - ground_.normal * up;
+    for (int k = 0; k < 3; ++k) r[k] = kComWeight * (along[k] + kComHeightShare * up * ground_.normal[k]);
     for (int i = 0; i < kLimbCount; ++i) {
-      if (limbs[i].mode == LimbMode::kBody) continue;
+      if (probe.limbs[i].mode == LimbMode::kBody) continue;
       const glm::vec3 miss = pose.worldPositions[rig_.end[i]] - goal.limbs[i].target;
       for (int k = 0; k < 3; ++k) r[3 + 3 * i + k] = kReachWeight * miss[k];
     }
     for (int i = 0; i < 2; ++i) {
       if (!bearingHands[i]) continue;
       const float reach = glm::length(LimbRoot(def_.skeleton, rig_, goal, static_cast<Limb>(i)) - goal.limbs[i].target);
-      r[3 + 3 * kLimbCount + i] = kStraightArmWeight * (reach - handReachFraction * armReach_);
+      r[3 + 3 * kLimbCount + i] = kStraightArmWeight * (reach - kSupportArmReach * armReach_);
     }
     r[kResiduals - 1] = kPitchWeight * (x[3] - startPitch);
     return r;
@@ -340,33 +377,39 @@ RiseController::TrunkPose RiseController::TrunkForCom(const glm::vec3& comGoal, 
     return sum;
   };
 
-  std::array<float, kUnknowns> x{start.pelvis.x, start.pelvis.y, start.pelvis.z, startPitch};
+  float heel = 0.0f;
+  for (int i : heels) {
+    const glm::vec3 footUp = move.limbs[i].toRotation * kUp;
+    heel += std::acos(std::clamp(glm::dot(footUp, ground_.normal), -1.0f, 1.0f)) / static_cast<float>(heels.size());
+  }
+  Unknowns x{move.from.pelvis.x, move.from.pelvis.y, move.from.pelvis.z, startPitch, heel};
+  const int unknowns = heels.empty() ? 4 : 5;
   Residuals r = residuals(x);
   float lambda = 1e-3f;
   for (int iteration = 0; iteration < 25; ++iteration) {
-    std::array<Residuals, kUnknowns> jacobian;
-    for (int u = 0; u < kUnknowns; ++u) {
-      std::array<float, kUnknowns> probe = x;
+    std::array<Residuals, kUnknowns> jacobian{};
+    for (int u = 0; u < unknowns; ++u) {
+      Unknowns probe = x;
       constexpr float kStep = 1e-3f;
       probe[u] += kStep;
       const Residuals moved = residuals(probe);
       for (int k = 0; k < kResiduals; ++k) jacobian[u][k] = (moved[k] - r[k]) / kStep;
     }
-    glm::mat4 normal(0.0f);
-    glm::vec4 gradient(0.0f);
-    for (int a = 0; a < kUnknowns; ++a) {
+    std::array<std::array<float, kUnknowns>, kUnknowns> normal{};
+    std::array<float, kUnknowns> gradient{};
+    for (int a = 0; a < unknowns; ++a) {
       for (int k = 0; k < kResiduals; ++k) gradient[a] += jacobian[a][k] * r[k];
-      for (int b = 0; b < kUnknowns; ++b) {
+      for (int b = 0; b < unknowns; ++b) {
         for (int k = 0; k < kResiduals; ++k) normal[a][b] += jacobian[a][k] * jacobian[b][k];
       }
     }
     bool improved = false;
     for (int attempt = 0; attempt < 6 && !improved; ++attempt) {
-      glm::mat4 damped = normal;
-      for (int a = 0; a < kUnknowns; ++a) damped[a][a] += lambda * (1.0f + normal[a][a]);
-      const glm::vec4 delta = -(glm::inverse(damped) * gradient);
-      std::array<float, kUnknowns> next = x;
-      for (int a = 0; a < kUnknowns; ++a) next[a] += delta[a];
+      std::array<std::array<float, kUnknowns>, kUnknowns> damped = normal;
+      for (int a = 0; a < unknowns; ++a) damped[a][a] += lambda * (1.0f + normal[a][a]);
+      const std::array<float, kUnknowns> delta = SolveSymmetric(damped, gradient, unknowns);
+      Unknowns next = x;
+      for (int a = 0; a < unknowns; ++a) next[a] -= delta[a];
       const Residuals trial = residuals(next);
       if (cost(trial) < cost(r)) {
         x = next, r = trial, lambda = std::max(1e-5f, lambda * 0.3f), improved = true;
@@ -376,7 +419,7 @@ RiseController::TrunkPose RiseController::TrunkForCom(const glm::vec3& comGoal, 
     }
     if (!improved) break;
   }
-  return trunkOf(x);
+  apply(x, move);
 }
 
 // ---------------------------------------------------------------------------
@@ -470,6 +513,15 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
 
   for (int i = 0; i < kLimbCount; ++i) EvaluateLimb(move.limbs[i], static_cast<Limb>(i), s, goal, goal.limbs[i]);
 
+  if (balance && (move.phase == RisePhase::kPush || move.phase == RisePhase::kCrawl) && !reading.jointPositions.empty()) {
+    // On hands and feet the plan is quasi-static, so where the CoM is matters
+    // more than how the trunk is turned: the pelvis goal moves by the measured
+    // CoM's horizontal error (and its integral, crawlOffset_), which the
+    // planted limbs turn into a shift of the whole body.
+    glm::vec3 error = PoseCom(goal) - reading.com;
+    error -= ground_.normal * glm::dot(error, ground_.normal);
+    goal.pelvisPosition += kCrawlComGain * error + crawlOffset_;
+  }
   if (move.keepComOverFeet && balance && !reading.jointPositions.empty()) {
     // Primary constraint of Phase 2: the whole-body CoM over the feet. The
     // trunk leans by balanceLean_ (the hip strategy, planned and smoothed in
@@ -693,135 +745,10 @@ RiseController::Move RiseController::PlanPush(const BodyReading& r) {
   // straight (the "bear" stance the crawl starts from).
   const glm::vec3 wrists = 0.5f * (move.limbs[0].to + move.limbs[1].to);
   const glm::vec3 comGoal = Project(ground_, glm::mix(wrists, ankles, 0.35f)) + ground_.normal * crawlComHeight_;
-  move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
-  freeHand_ = (rng_() & 1u) ? Limb::kHandLeft : Limb::kHandRight;
-  freeHandLifted_ = false;
+  PlanTrunk(move, comGoal, {true, true});
   crawlSteps_ = 0;
-  return move;
-}
-
-RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
-  const glm::vec3 left = glm::normalize(glm::cross(kUp, heading_));
-  const SupportPolygon feet = FeetRegion(r);
-  const bool overFeet = !feet.Empty() && feet.SignedDistance(Ground(r.com)) < kRiseTriggerDistance;
-  if (overFeet || crawlSteps_ >= kMaxCrawlSteps) return PlanRise(r);
-  // Far from the feet, hand swaps would take many small steps: the feet walk
-  // in toward the hands first, each stepping while both hands and the other
-  // foot bear the body; the hands then take over as the paper's Phase 1 does.
-  if (footStepped_) return PlanFollow(r);
-  const glm::vec3 hands = 0.5f * (r.jointPositions[rig_.end[0]] + r.jointPositions[rig_.end[1]]);
-  const float feetBehindHands = glm::dot(Project(ground_, hands) - FeetCentre(r), heading_);
-  if (feetBehindHands > kFootWalkDistance || footLifted_) return PlanFootStep(r);
-  if (!satBack_) return PlanSitBack(r);
-
-  Move move;
-  move.phase = RisePhase::kCrawl;
-  move.from = MeasuredTrunk(r);
-  move.to = move.from;
-  const Limb support = OtherHand(freeHand_);
-  move.limbs[static_cast<int>(support)] = HoldLimb(r, support, true);
-  for (int i = 2; i < 4; ++i) {
-    move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
-    move.limbs[i].toRotation = move.limbs[i].fromRotation;  // feet hold; the shift below picks their heel lift
-  }
-
-  if (!freeHandLifted_) {
-    // Iteration of Phase 1: the free hand is released, the CoM shifts toward
-    // the feet inside the support triangle of both feet and the support hand.
-    PointMassPlan plan;
-    plan.com = r.com;
-    plan.footLeft = r.jointPositions[rig_.end[2]];
-    plan.footRight = r.jointPositions[rig_.end[3]];
-    plan.feetRegion = feet;
-    plan.supportHand = r.jointPositions[rig_.end[static_cast<int>(support)]];
-    plan.leg = {0.6f * legReach_, legReach_ + 0.1f};
-    plan.arm = {0.6f * armReach_, armReach_ + 0.35f};
-    plan.minHeight = 0.35f * standComHeight_;
-    // Hips high while the feet are far (a pike), lower into a squat as the CoM nears them.
-    const float farFromFeet = std::clamp(feet.SignedDistance(Ground(r.com)) / 0.5f, 0.0f, 1.0f);
-    plan.preferredHeight = glm::mix(kSquatComRatio * standComHeight_, crawlComHeight_, farFromFeet);
-    plan.maxStep = 0.18f;
-    plan.balanceMargin = 0.01f;
-    plan.Solve();
-    // The free hand stays down while the CoM moves into the triangle; it only
-    // lets go in the reach that follows, once balance no longer needs it.
-    move.limbs[static_cast<int>(freeHand_)] = HoldLimb(r, freeHand_, true);
-    // Heels come down as the pelvis moves back over the feet: the toe pivot
-    // aims for the flattest foot the ankle allows.
-    const float toFeet = glm::length(Ground(plan.target) - feet.Centroid());
-    const float heelLift = std::clamp(glm::radians(60.0f) * (toFeet - 0.15f) / 0.6f, 0.0f, glm::radians(60.0f));
-    for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, heelLift);
-    move.to = TrunkForCom(plan.target, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
-    move.name = "shift";
-    move.duration = std::clamp(glm::length(plan.target - r.com) / 0.15f, 0.6f, 2.0f);
-    freeHandLifted_ = true;
-  } else {
-    // The free hand goes beside the body toward the CoM and becomes the
-    // support hand. The arms hang from the shoulders, not from the model's
-    // point mass, so "beside the CoM" is taken as one step toward it, never
-    // closer than the hands are in a squat with the CoM over the feet.
-    const float side = IsLeft(freeHand_) ? 1.0f : -1.0f;
-    const glm::vec3 supportPalm = Project(ground_, r.jointPositions[rig_.end[static_cast<int>(support)]]);
-    const glm::vec3 feetCentre = FeetCentre(r);
-    const float supportAhead = glm::dot(supportPalm - feetCentre, heading_);
-    const float ahead = std::max(kSquatHandsAhead, supportAhead - kHandStep);
-    const glm::vec3 wristSpot = Project(ground_, feetCentre + heading_ * ahead + left * side * shoulderHalfWidth_ * 0.75f);
-    LimbMove& free = move.limbs[static_cast<int>(freeHand_)];
-    free = HoldLimb(r, freeHand_, false);
-    free.toRotation = PlantedHandRotation(freeHand_);
-    free.to = WristAbove(freeHand_, wristSpot, free.toRotation);
-    free.lift = HandSwingLift(freeHand_);
-    move.name = "reach";
-    move.duration = 0.8;
-    freeHandLifted_ = false;
-    freeHand_ = support;
-    ++crawlSteps_;
-  }
-  return move;
-}
-
-RiseController::Move RiseController::PlanFootStep(const BodyReading& r) {
-  Move move;
-  move.phase = RisePhase::kCrawl;
-  move.from = move.to = MeasuredTrunk(r);
-  for (int i = 0; i < 2; ++i) move.limbs[i] = HoldLimb(r, static_cast<Limb>(i), true);
-  const Limb stance = freeFoot_ == Limb::kFootLeft ? Limb::kFootRight : Limb::kFootLeft;
-  move.limbs[static_cast<int>(stance)] = ToePivot(r, stance, 0.0f);
-  move.limbs[static_cast<int>(stance)].toRotation = move.limbs[static_cast<int>(stance)].fromRotation;
-  const int free = static_cast<int>(freeFoot_);
-  if (!footLifted_) {
-    // Into the triangle of both hands and the stance foot, at the crawl height.
-    move.limbs[free] = ToePivot(r, freeFoot_, 0.0f);
-    move.limbs[free].toRotation = move.limbs[free].fromRotation;
-    const SupportPolygon triangle = SupportPolygon::FromPoints(
-        {Ground(move.limbs[0].to), Ground(move.limbs[1].to), Ground(move.limbs[static_cast<int>(stance)].to)});
-    glm::vec2 goal = Ground(r.com);
-    const glm::vec2 centre = triangle.Centroid();
-    for (int k = 0; k < 20 && triangle.SignedDistance(goal) > -kFootStepMargin; ++k) goal += 0.1f * (centre - goal);
-    const glm::vec3 comGoal = Project(ground_, glm::vec3(goal.x, 0.0f, goal.y)) + ground_.normal * crawlComHeight_;
-    move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
-    move.name = "lean";
-    move.duration = 0.6;
-    footLifted_ = true;
-  } else {
-    // The free foot steps toward the hands, landing on its toes.
-    const int end = rig_.end[free];
-    const glm::vec3 toe = Project(ground_, r.jointPositions[end] + r.jointRotations[end] * toeLocal_);
-    // As far as it takes to bring the feet a squat's distance behind the hands.
-    const glm::vec3 hands = 0.5f * (r.jointPositions[rig_.end[0]] + r.jointPositions[rig_.end[1]]);
-    const BoneBox& box = def_.skeleton.joints[end].box;
-    const glm::vec3 sole = Project(ground_, r.jointPositions[end] + r.jointRotations[end] * box.center);
-    const float behind = glm::dot(Project(ground_, hands) - sole, heading_) - kFootWalkDistance;
-    LimbMove& m = move.limbs[free] = HoldLimb(r, freeFoot_, false);
-    m.toRotation = FootRotation(heading_, glm::radians(60.0f));
-    m.to = AnkleForToe(toe + heading_ * std::clamp(behind, 0.1f, kFootStep), m.toRotation);
-    m.lift = static_cast<float>(spec_.style.stepHeightM);
-    move.name = "step";
-    move.duration = 0.6;
-    footLifted_ = false;
-    footStepped_ = true;
-    freeFoot_ = stance;
-  }
+  shiftTries_ = 0;
+  crawlOffset_ = glm::vec3(0.0f);
   return move;
 }
 
@@ -839,28 +766,164 @@ RiseController::Move RiseController::OnAllFours(const BodyReading& r, const char
   return move;
 }
 
-RiseController::Move RiseController::PlanSitBack(const BodyReading& r) {
-  // With the feet in close behind the hands, the CoM moves back toward the
-  // feet, hips low and heels coming down, as far as the hands on the ground
-  // allow (TrunkForCom keeps every limb in reach), before a hand lets go.
-  Move move = OnAllFours(r, "sit back", 1.6);
-  for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, glm::radians(30.0f));
-  const glm::vec3 hands = 0.5f * (r.jointPositions[rig_.end[0]] + r.jointPositions[rig_.end[1]]);
-  const glm::vec3 comGoal = Project(ground_, glm::mix(FeetCentre(r), hands, 0.3f)) + ground_.normal * (0.45f * standComHeight_);
-  move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
-  satBack_ = true;
-  return move;
+float RiseController::HandsAhead(const BodyReading& r, Limb hand) const {
+  return glm::dot(ContactPoint(r, hand) - FeetCentre(r), heading_);
 }
 
-RiseController::Move RiseController::PlanFollow(const BodyReading& r) {
-  // After a step, on all fours again, the CoM goes back to the middle of the
-  // four supports, kept nearer the hands, from where either foot can step next.
-  Move move = OnAllFours(r, "follow", 0.6);
-  const glm::vec3 hands = 0.5f * (r.jointPositions[rig_.end[0]] + r.jointPositions[rig_.end[1]]);
-  const glm::vec3 comGoal = Project(ground_, glm::mix(hands, FeetCentre(r), kFollowFraction)) + ground_.normal * crawlComHeight_;
-  move.to = TrunkForCom(comGoal, heading_, move.from, move.limbs, kSupportArmReach, {true, true});
-  footStepped_ = false;
-  return move;
+std::optional<Limb> RiseController::ChooseStep(const BodyReading& r) const {
+  // Phase 1 brings hands and feet together until the CoM can sit over the
+  // feet with the hands still down: the feet walk in while they are far (each
+  // hand step would gain little there), then the hands walk back toward the
+  // feet as the paper's Phase 1 does, the one farther from its place first.
+  // A step that ended short leaves its limb in the air: it goes down first.
+  for (int i = 0; i < kLimbCount; ++i) {
+    if (Clearance(r, static_cast<Limb>(i)) > kLandedClearance) return static_cast<Limb>(i);
+  }
+  const float handsAhead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
+  if (handsAhead > kFootWalkDistance) {
+    const float left = glm::dot(ContactPoint(r, Limb::kFootLeft), heading_);
+    const float right = glm::dot(ContactPoint(r, Limb::kFootRight), heading_);
+    return left < right ? Limb::kFootLeft : Limb::kFootRight;
+  }
+  const Limb hand = HandsAhead(r, Limb::kHandLeft) > HandsAhead(r, Limb::kHandRight) ? Limb::kHandLeft : Limb::kHandRight;
+  if (HandsAhead(r, hand) > kSquatHandsAhead + 0.5f * kHandStep) return hand;
+  return std::nullopt;
+}
+
+SupportPolygon RiseController::StanceWithout(const BodyReading& r, Limb lifted) const {
+  std::vector<glm::vec2> points;
+  for (int i = 0; i < kLimbCount; ++i) {
+    if (i != static_cast<int>(lifted)) points.push_back(Ground(ContactPoint(r, static_cast<Limb>(i))));
+  }
+  return SupportPolygon::FromPoints(points);
+}
+
+float RiseController::CrawlComHeight(const BodyReading& r) const {
+  // Hips high while the feet are far (a pike), lower into a squat as the CoM nears them.
+  const float farFromFeet = std::clamp(FeetRegion(r).SignedDistance(Ground(r.com)) / 0.5f, 0.0f, 1.0f);
+  return glm::mix(kSquatComRatio * standComHeight_, crawlComHeight_, farFromFeet);
+}
+
+RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
+  if (FeetRegion(r).SignedDistance(Ground(r.com)) < -kRiseMargin || crawlSteps_ >= kMaxCrawlSteps) return PlanRise(r);
+  const std::optional<Limb> step = ChooseStep(r);
+  if (!step) {
+    // Hands and feet are together: the CoM goes over the feet, heels down,
+    // the hands still touching; the rise lets go of them once it is there.
+    Move move = OnAllFours(r, "sit back", 1.2);
+    const glm::vec3 comGoal = BalancePoint(r) + ground_.normal * (kSquatComRatio * standComHeight_);
+    PlanTrunk(move, comGoal, {true, true}, true);
+    ++crawlSteps_;
+    return move;
+  }
+  const SupportPolygon stance = StanceWithout(r, *step);
+  const bool balanced = stance.SignedDistance(Ground(r.com)) < -kLiftMargin;
+  if (!balanced && shiftTries_ < kMaxShiftTries) {
+    // Iteration of Phase 1: the CoM moves into the support triangle of the
+    // other three limbs, kShiftMargin inside it, as close as that allows to
+    // where it is (for a hand step: to a point a little nearer the feet, the
+    // paper's secondary goal). PlanTrunk keeps every limb in reach, so a
+    // goal the body cannot make comes back as the nearest it can.
+    ++shiftTries_;
+    glm::vec3 comGoal;
+    if (IsArm(*step)) {
+      // The paper's low-dimensional model: both feet and the support hand
+      // fixed, the CoM within every limb's length range, inside their triangle,
+      // as close to the feet as that allows.
+      PointMassPlan plan;
+      plan.com = r.com;
+      plan.footLeft = r.jointPositions[rig_.end[2]];
+      plan.footRight = r.jointPositions[rig_.end[3]];
+      plan.feetRegion = FeetRegion(r);
+      plan.supportHand = ContactPoint(r, OtherHand(*step));
+      plan.leg = {0.6f * legReach_, legReach_ + 0.1f};
+      plan.arm = {0.6f * armReach_, armReach_ + 0.35f};
+      plan.minHeight = 0.35f * standComHeight_;
+      plan.preferredHeight = CrawlComHeight(r);
+      plan.maxStep = 0.18f;
+      plan.balanceMargin = kShiftMargin;
+      plan.Solve();
+      comGoal = plan.target;
+    } else {
+      // A foot step: into the triangle of both hands and the other foot, but
+      // never near the hands' line: over it the body pivots on its hands.
+      glm::vec2 goal = stance.Closest(Ground(r.com));
+      const glm::vec2 centre = stance.Centroid();
+      const glm::vec2 forward = glm::normalize(Ground(heading_));
+      const float handLine = std::min(glm::dot(Ground(ContactPoint(r, Limb::kHandLeft)), forward),
+                                      glm::dot(Ground(ContactPoint(r, Limb::kHandRight)), forward));
+      for (int k = 0; k < 30 && stance.SignedDistance(goal) > -kShiftMargin; ++k) goal += 0.1f * (centre - goal);
+      goal -= forward * std::max(0.0f, glm::dot(goal, forward) - (handLine - kHandLineMargin));
+      comGoal = Project(ground_, glm::vec3(goal.x, 0.0f, goal.y)) + ground_.normal * CrawlComHeight(r);
+    }
+    Move move = OnAllFours(r, "shift", 0.8);
+    const float toFeet = glm::length(Ground(comGoal) - FeetRegion(r).Centroid());
+    const float heelLift = std::clamp(glm::radians(60.0f) * (toFeet - 0.15f) / 0.6f, 0.0f, glm::radians(60.0f));
+    for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, heelLift);
+    PlanTrunk(move, comGoal, {true, true}, true);
+    return move;
+  }
+  // The step: the limb lifts and swings to its new place on a Bezier path
+  // while the other three hold the body, its CoM kept where it is. The place
+  // is the farthest toward the goal (up to a full step) that the body can
+  // reach with every limb from one trunk pose.
+  shiftTries_ = 0;
+  ++crawlSteps_;
+  const Limb limb = *step;
+  const int i = static_cast<int>(limb);
+  const glm::vec3 left = glm::normalize(glm::cross(kUp, heading_));
+  Move best;
+  // A limb left in the air by a short step only goes down where it is.
+  const bool putDown = Clearance(r, limb) > kLandedClearance;
+  if (!putDown) landingDepth_ = 0.0f;
+  static constexpr std::array<float, 5> kFractions{1.0f, 0.75f, 0.5f, 0.3f, 0.15f};
+  for (const float candidate : kFractions) {
+    const float fraction = putDown ? 0.0f : candidate;
+    Move move = OnAllFours(r, IsArm(limb) ? "hand step" : "foot step", 0.7);
+    LimbMove& m = move.limbs[i] = HoldLimb(r, limb, false);
+    if (IsArm(limb)) {
+      const float ahead = HandsAhead(r, limb) - fraction * std::min(kHandStep, HandsAhead(r, limb) - kSquatHandsAhead);
+      const float side = IsLeft(limb) ? 1.0f : -1.0f;
+      const glm::vec3 spot = Project(ground_, FeetCentre(r) + heading_ * ahead + left * side * shoulderHalfWidth_ * 0.75f);
+      m.toRotation = PlantedHandRotation(limb);
+      m.to = WristAbove(limb, spot, m.toRotation);
+      m.lift = HandSwingLift(limb);
+    } else if (putDown) {
+      // Straight down, turned as it is. The body holding the trunk off its
+      // plan by a few degrees leaves the foot as far above its target each
+      // time, so each try goes deeper by what the last one missed.
+      landingDepth_ += Clearance(r, limb);
+      m.toRotation = m.fromRotation;
+      m.to = m.from - ground_.normal * (landingDepth_ + 0.003f);
+      m.lift = 0.0f;
+    } else {
+      const float handsAhead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
+      const float length = fraction * std::clamp(handsAhead - kFootWalkDistance + 0.05f, 0.1f, kFootStep);
+      // From the ankle, not the toe: with no hip twist the foot's yaw follows the
+      // leg, so its toe can sit to one side, and stepping from there walked
+      // the feet apart.
+      m.toRotation = FootRotation(heading_, glm::radians(60.0f));
+      const glm::vec3 toe = Project(ground_, r.jointPositions[rig_.end[i]] + m.toRotation * toeLocal_);
+      m.to = AnkleForToe(toe + heading_ * length, m.toRotation);
+      m.lift = static_cast<float>(spec_.style.stepHeightM);
+    }
+    PlanTrunk(move, r.com, {limb != Limb::kHandLeft, limb != Limb::kHandRight});
+    best = move;
+    if (putDown || Reachable(move)) break;
+  }
+  return best;
+}
+
+bool RiseController::Reachable(const Move& move) const {
+  const PoseGoal goal = GoalAt(move, 1.0f, BodyReading{});
+  const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
+  for (int i = 0; i < kLimbCount; ++i) {
+    if (move.limbs[i].mode != LimbMode::kBody &&
+        glm::length(pose.worldPositions[rig_.end[i]] - goal.limbs[i].target) > kReachTolerance) {
+      return false;
+    }
+  }
+  return true;
 }
 
 std::array<float, 2> RiseController::LegPitches(const BodyReading& r, int leg) const {
@@ -930,7 +993,18 @@ RiseController::Move RiseController::PlanStand(const BodyReading& r) {
   return move;
 }
 
-glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb) const {
+float RiseController::Clearance(const BodyReading& r, Limb limb) const {
+  const int end = rig_.end[static_cast<int>(limb)];
+  const BoneBox& box = def_.skeleton.joints[end].box;
+  float lowest = 1e9f;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 sign((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f, (corner & 4) ? 1.0f : -1.0f);
+    lowest = std::min(lowest, Height(ground_, r.jointPositions[end] + r.jointRotations[end] * (box.center + sign * box.halfExtents)));
+  }
+  return lowest;
+}
+
+glm::vec3 RiseController::ContactPoint(const BodyReading& r, Limb limb) const {
   const int end = rig_.end[static_cast<int>(limb)];
   const BoneBox& box = def_.skeleton.joints[end].box;
   const glm::quat rotation = r.jointRotations[end];
@@ -940,10 +1014,18 @@ glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb) const {
   if (glm::dot(rotation * kUp, ground_.normal) < std::cos(glm::radians(10.0f))) {
     return Project(ground_, r.jointPositions[end] + rotation * toeLocal_);
   }
+  return Project(ground_, r.jointPositions[end] + rotation * box.center);
+}
+
+glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb) const {
+  const int end = rig_.end[static_cast<int>(limb)];
+  const glm::quat rotation = r.jointRotations[end];
+  if (IsArm(limb) || glm::dot(rotation * kUp, ground_.normal) < std::cos(glm::radians(10.0f))) return ContactPoint(r, limb);
   // A flat foot is to press right below the CoM, along its length: where the
   // force must act for the body to balance. (Where it presses now would be
   // wrong: tipping back, the pressure moves to the heel, and feeding that
   // forward would take away the ankle torque that stops the tipping.)
+  const BoneBox& box = def_.skeleton.joints[end].box;
   const glm::vec3 centre = r.jointPositions[end] + rotation * box.center;
   const glm::vec3 along = rotation * glm::vec3(0.0f, 0.0f, 1.0f);
   const float offset = std::clamp(glm::dot(r.com - centre, along), -box.halfExtents.z, box.halfExtents.z);
@@ -1044,6 +1126,12 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     trace_.trackingError = lag;
     if (lag < kGateStop) stalledSince_ = -1.0;
     else if (stalledSince_ < 0.0) stalledSince_ = reading.time;
+    if (move_.phase == RisePhase::kPush || move_.phase == RisePhase::kCrawl) {
+      glm::vec3 error = PoseCom(GoalAt(move_, progress_, reading, false)) - reading.com;
+      error -= ground_.normal * glm::dot(error, ground_.normal);
+      crawlOffset_ += error * static_cast<float>(dt) * kCrawlComIntegral;
+      if (glm::length(crawlOffset_) > kMaxCrawlOffset) crawlOffset_ *= kMaxCrawlOffset / glm::length(crawlOffset_);
+    }
     if (move_.keepComOverFeet) {
       const float lean = BalanceLean(move_, progress_, reading);
       const float step = kLeanRate * static_cast<float>(dt);

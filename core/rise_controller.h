@@ -35,6 +35,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -111,9 +112,15 @@ class RiseController {
   Move PlanPlace(const BodyReading& reading);
   Move PlanPush(const BodyReading& reading);
   Move PlanCrawl(const BodyReading& reading);
-  Move PlanFootStep(const BodyReading& reading);
-  Move PlanFollow(const BodyReading& reading);
-  Move PlanSitBack(const BodyReading& reading);
+  // The limb Phase 1 moves next (none: hands and feet are together).
+  std::optional<Limb> ChooseStep(const BodyReading& reading) const;
+  // How far a hand is ahead of the feet along the heading, m.
+  float HandsAhead(const BodyReading& reading, Limb hand) const;
+  // Ground hull of the contact points of every limb but one.
+  SupportPolygon StanceWithout(const BodyReading& reading, Limb lifted) const;
+  float CrawlComHeight(const BodyReading& reading) const;
+  // Whether the move's end pose puts every held or moving hand and foot on its place.
+  bool Reachable(const Move& move) const;
   // A move on both hands and both feet, all held where they are.
   Move OnAllFours(const BodyReading& reading, const char* name, double duration) const;
   Move PlanRise(const BodyReading& reading);
@@ -144,11 +151,10 @@ class RiseController {
   glm::vec3 WristAbove(Limb hand, const glm::vec3& groundPoint, const glm::quat& rotation) const;
   glm::vec3 WristForPalm(Limb hand, const glm::vec3& palmPoint, const glm::quat& rotation) const;
   glm::vec3 AnkleForToe(const glm::vec3& toePoint, const glm::quat& rotation) const;
-  // The trunk for a CoM goal: pitch so the shoulders sit within arm reach of the
-  // bearing hands, then the pelvis moved until the whole-body CoM meets the goal.
-  TrunkPose TrunkForCom(const glm::vec3& comGoal, const glm::vec3& forward, const TrunkPose& start,
-                        const std::array<LimbMove, kLimbCount>& limbs, float handReachFraction,
-                        const std::array<bool, 2>& bearingHands) const;
+  // Sets move.to (and with freeHeels the heel lift of feet pivoting on their
+  // toes) for a CoM goal, keeping every held hand and foot in reach.
+  void PlanTrunk(Move& move, const glm::vec3& comGoal, const std::array<bool, 2>& bearingHands,
+                 bool freeHeels = false) const;
 
   // Evaluation of the current move at progress s in [0, 1].
   // balance: apply Phase 2's balance (lean and slide) to moves that keep the CoM over the feet.
@@ -169,6 +175,11 @@ class RiseController {
   // shared among the planted supports so their centre of pressure is under
   // the CoM. Internal torques only: nothing pushes the body from outside.
   void FeedForward(const BodyReading& reading, std::vector<glm::vec3>& out) const;
+  // Height of the lowest corner of a hand or foot above the ground, m.
+  float Clearance(const BodyReading& reading, Limb limb) const;
+  // Where a hand or foot touches the ground: the heel of a hand, the toe edge
+  // of a foot on its toes, the middle of a flat sole.
+  glm::vec3 ContactPoint(const BodyReading& reading, Limb limb) const;
   // Where a planted hand or foot is to press on the ground, for FeedForward.
   glm::vec3 SupportPoint(const BodyReading& reading, Limb limb) const;
 
@@ -194,16 +205,13 @@ class RiseController {
   bool finished_ = false;
   int retries_ = 0;
   int crawlSteps_ = 0;
-  Limb freeHand_ = Limb::kHandLeft;
-  bool freeHandLifted_ = false;
-  Limb freeFoot_ = Limb::kFootLeft;
-  bool footLifted_ = false;
-  bool footStepped_ = false;
-  bool satBack_ = false;
+  int shiftTries_ = 0;
+  float landingDepth_ = 0.0f;  // m below where it is that a limb left in the air aims
   bool rollTucked_ = false;
   glm::vec3 heading_{0.0f, 0.0f, 1.0f};
   glm::vec3 balanceOffset_{0.0f};
   float balanceLean_ = 0.0f;
+  glm::vec3 crawlOffset_{0.0f};
   std::array<bool, kLimbCount> planted_{};
   TraceSample trace_;
 };
