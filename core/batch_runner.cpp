@@ -208,7 +208,7 @@ std::string CheckBatchOutDir(const std::string& outDir) {
   std::error_code ec;
   if (outDir.empty()) return "empty output folder";
   if (!fs::is_directory(outDir, ec)) return outDir + ": folder does not exist (rise-gen does not create folders)";
-  return "";
+  return CheckWritable((fs::path(outDir) / "index.json").string());
 }
 
 BatchReport RunBatch(const LibraryManifest& manifest, const std::vector<size_t>& selection,

@@ -64,7 +64,7 @@ struct BatchReport {
   nlohmann::ordered_json index;
 };
 
-// "" when outDir is an existing folder, otherwise why it cannot be used.
+// "" when outDir is an existing, writable folder, otherwise why it cannot be used.
 std::string CheckBatchOutDir(const std::string& outDir);
 
 // Runs the clips manifest.clips[i] for i in `selection` (ascending; e.g. ShardClips).

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "core/clip_check.h"
+#include "export/atomic_file.h"
 #include "export/bvh_writer.h"
 #include "export/clip_metadata_json.h"
 #include "export/gltf_writer.h"
@@ -42,7 +43,7 @@ std::string CheckOutputFolder(const std::string& path) {
   if (!folder.empty() && !fs::is_directory(folder, ec)) {
     return path + ": folder '" + folder.string() + "' does not exist (rise-gen does not create folders)";
   }
-  return "";
+  return CheckWritable(path);
 }
 
 std::string CheckClipOutputPath(const std::string& path) {

@@ -28,10 +28,11 @@ struct ClipOutputOptions {
 ClipOutputOptions ClipOutputOptionsOf(const RiseSpec& spec);
 
 // "" when a clip can be written to `path`: its extension is .glb, .gltf or .bvh and its folder
-// exists; otherwise why not.
+// exists and is writable; otherwise why not.
 std::string CheckClipOutputPath(const std::string& path);
 
-// "" when `path` names a file (not a folder) in an existing folder; otherwise why not.
+// "" when `path` names a file (not a folder) in an existing folder and can be written there (see
+// CheckWritable in export/atomic_file.h: a read-only folder or file is refused); otherwise why not.
 std::string CheckOutputFolder(const std::string& path);
 
 // Every file WriteClipFiles(…, paths, …) makes: the clips, a .gltf's .bin, the sidecars.

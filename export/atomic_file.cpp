@@ -19,9 +19,16 @@ std::string Failure(const std::string& path, const std::string& cause) {
   return "cannot write '" + path + "': " + cause;
 }
 
+// No write permission for this process, or none for anyone (see CheckWritable).
+bool ReadOnly(const std::filesystem::path& path) {
+  struct stat status {};
+  return ::access(path.c_str(), W_OK) != 0 ||
+         (::stat(path.c_str(), &status) == 0 && (status.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0);
+}
+
 }  // namespace
 
-std::string WriteFileAtomically(const std::string& path, std::string_view bytes) {
+std::string CheckWritable(const std::string& path) {
   namespace fs = std::filesystem;
   if (path.empty()) return Failure(path, "the path is empty");
   const fs::path target(path);
@@ -32,6 +39,13 @@ std::string WriteFileAtomically(const std::string& path, std::string_view bytes)
   if (fs::is_directory(target, ec)) return Failure(path, "a folder of that name exists");
   const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   if (!fs::is_directory(folder, ec)) return Failure(path, "folder '" + folder.string() + "' does not exist");
+  if (ReadOnly(folder)) return Failure(path, "folder '" + folder.string() + "' is read-only");
+  if (fs::exists(target, ec) && ReadOnly(target)) return Failure(path, "the file is read-only");
+  return {};
+}
+
+std::string WriteFileAtomically(const std::string& path, std::string_view bytes) {
+  if (std::string problem = CheckWritable(path); !problem.empty()) return problem;
 
   // mkstemp picks a name no other writer uses, even for the same destination.
   std::string tempName = path + ".tmp.XXXXXX";

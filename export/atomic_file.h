@@ -16,4 +16,12 @@ namespace rise {
 // temporary nor a partial `path`; an existing `path` is left untouched.
 std::string WriteFileAtomically(const std::string& path, std::string_view bytes);
 
+// Why `path` cannot be written ("" when, as far as can be told before writing, it can), in the
+// words of WriteFileAtomically's messages: the path is empty or names a folder, its folder is
+// missing or not writable, or the folder or an existing file at `path` is read-only. Read-only
+// means no write permission for this process, or none for anyone: a protection the user set,
+// honoured here even for root, whom the system would let through. WriteFileAtomically checks it
+// first; callers check it before long work so a bad path costs no time.
+std::string CheckWritable(const std::string& path);
+
 }  // namespace rise

@@ -97,6 +97,28 @@ rise_bad_input(no_output "--output is required" ${RISE_SAMPLES}/supine.json)
 rise_bad_input(extension "c.fbx: found the extension '.fbx', allowed: .glb, .gltf, .bvh" ${RISE_SAMPLES}/supine.json -o c.glb -o c.fbx)
 rise_bad_input(folder "nodir/c.glb: folder 'nodir' does not exist" ${RISE_SAMPLES}/supine.json -o c.glb -o nodir/c.glb)
 rise_bad_input(preview_folder "nodir/p.png: folder 'nodir' does not exist" ${RISE_SAMPLES}/supine.json -o c.glb --preview nodir/p.png)
+# The bad inputs of issue 8 §2 not covered above.
+rise_bad_input(empty "empty.json:1:1: invalid JSON: syntax error while parsing value - unexpected end of input"
+  ${bad}/empty.json -o c.glb)
+rise_bad_input(not_json "not_json.json:1:1: invalid JSON: syntax error while parsing value - invalid literal"
+  ${bad}/not_json.json -o c.glb)
+rise_bad_input(top_type "top_array.json: found an array of 1, allowed: an object" ${bad}/top_array.json -o c.glb)
+rise_bad_input(height_negative "character.height_m: found -1.7, allowed: 1.2 to 2.3 m" ${bad}/height_negative.json -o c.glb)
+rise_bad_input(mass_zero "character.mass_kg: found 0, allowed: 30 to 200 kg" ${bad}/mass_zero.json -o c.glb)
+rise_bad_input(nan "nan.json:1:29: invalid JSON: syntax error while parsing value - invalid literal" ${bad}/nan.json -o c.glb)
+rise_bad_input(huge_number "huge_number.json:1:23: found the number 1e400, allowed: numbers a double can hold"
+  ${bad}/huge_number.json -o c.glb)
+rise_bad_input(angle_limit "start.joints_deg.shin_l\\[0\\]: found 200, allowed: 0 to 150 degrees \\(flexion\\)"
+  ${bad}/angle_limit.json -o c.glb)
+rise_bad_input(joint_unknown "start.joints_deg.tail: unknown joint \"tail\" allowed: abdomen, chest, head"
+  ${bad}/joint_unknown.json -o c.glb)
+# Read-only means no write permission bits: refused before the simulation, even when root runs it.
+rise_cli_test(bad_read_only_folder EXIT 2 REGEX "cannot write 'ro/c.glb': folder 'ro' is read-only"
+  ARGS ${RISE_SAMPLES}/supine.json -o ro/c.glb ABSENT ro/c.glb ro/c.json SETUP sh -c "mkdir ro && chmod a-w ro")
+rise_cli_test(bad_read_only_file EXIT 2 REGEX "cannot write 'c.glb': the file is read-only"
+  ARGS ${RISE_SAMPLES}/supine.json -o c.glb PRESENT c.glb ABSENT c.json SETUP sh -c "echo old > c.glb && chmod a-w c.glb")
+rise_cli_test(bad_output_is_input EXIT 2 REGEX "in.glb \\(its file in.json\\): would overwrite the input file"
+  ARGS in.json -o in.glb PRESENT in.json ABSENT in.glb SETUP ${CMAKE_COMMAND} -E copy ${RISE_SAMPLES}/supine.json in.json)
 
 # --- batch manifests and options ---
 set(tiny ${RISE_CLI_DIR}/tiny_library.json)
@@ -115,6 +137,8 @@ rise_bad_batch(shard "--shard: found \"2/2\", allowed: I/N with 0 <= I < N" ${ti
 rise_bad_batch(shard_library "--library-glb: found with --shard" ${tiny} -o out --shard 0/2 --library-glb)
 rise_bad_batch(out_folder "missing: folder does not exist" ${tiny} -o missing)
 rise_bad_batch(jobs "--jobs: Value 0 not in range" ${tiny} -o out --jobs 0)
+rise_cli_test(bad_batch_read_only EXIT 2 REGEX "cannot write 'ro/index.json': folder 'ro' is read-only"
+  ARGS batch ${tiny} -o ro ABSENT ro/index.json SETUP sh -c "mkdir ro && chmod a-w ro")
 
 # A batch of clips that cannot stand in 2 s: every clip written and indexed as failed, exit 1.
 rise_cli_test(batch_failures EXIT 1
@@ -152,3 +176,11 @@ add_test(NAME cli.batch_interrupt COMMAND sh ${RISE_CLI_DIR}/interrupt.sh $<TARG
   ${RISE_SAMPLES}/library.json ${RISE_CLI_WORK}/batch_interrupt ${CMAKE_COMMAND})
 set_tests_properties(cli.batch_interrupt PROPERTIES PASS_REGULAR_EXPRESSION "index valid: [0-9]+ finished, [0-9]+ pending"
   FAIL_REGULAR_EXPRESSION "RISE_INTERRUPT_FAILED" LABELS cli)
+
+# SIGKILL mid-write, one clip and a batch: every output stays the complete old or new file.
+add_executable(kill_mid_write ${RISE_CLI_DIR}/kill_mid_write.cpp)
+target_link_libraries(kill_mid_write PRIVATE rise_export nlohmann_json::nlohmann_json rise_options)
+add_test(NAME cli.kill_mid_write COMMAND kill_mid_write $<TARGET_FILE:rise-gen> ${RISE_SAMPLES}/supine.json ${tiny}
+  ${RISE_CLI_WORK}/kill_mid_write)
+set_tests_properties(cli.kill_mid_write PROPERTIES PASS_REGULAR_EXPRESSION "never lose work: every check held"
+  FAIL_REGULAR_EXPRESSION "RISE_KILL_FAILED" LABELS cli)

@@ -31,6 +31,28 @@ TEST_SUITE("atomic_file") {
     CHECK(rise::WriteFileAtomically(folder.File("sub") + "/", "data").find("folder") != std::string::npos);
     CHECK(folder.Files() == std::vector<std::string>{"out.glb"});
   }
+  TEST_CASE("a read-only folder or file is refused, for root too, and nothing changes") {
+    namespace fs = std::filesystem;
+    rise::test::TempFolder folder;
+    fs::create_directory(folder.Path() / "locked");
+    fs::permissions(folder.Path() / "locked", fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write,
+                    fs::perm_options::remove);
+    const std::string inLocked = folder.File("locked/clip.glb");
+    CHECK(rise::CheckWritable(inLocked) == "cannot write '" + inLocked + "': folder '" + folder.File("locked") +
+                                               "' is read-only");
+    CHECK(rise::WriteFileAtomically(inLocked, "data") == rise::CheckWritable(inLocked));
+    CHECK(fs::is_empty(folder.Path() / "locked"));
+    fs::permissions(folder.Path() / "locked", fs::perms::owner_write, fs::perm_options::add);
+
+    const std::string kept = folder.File("kept.glb");
+    REQUIRE(rise::WriteFileAtomically(kept, "old").empty());
+    fs::permissions(kept, fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write,
+                    fs::perm_options::remove);
+    CHECK(rise::WriteFileAtomically(kept, "new") == "cannot write '" + kept + "': the file is read-only");
+    CHECK(rise::test::FileContents(kept) == "old");
+    CHECK(rise::CheckWritable(folder.File("fresh.glb")).empty());
+    CHECK(folder.Files().size() == 2);
+  }
   TEST_CASE("an unwritable folder gives the system's reason and leaves no file") {
     // /proc refuses new files even to root, so this holds whoever runs the tests.
     const std::string path = "/proc/rise_clip.glb";
