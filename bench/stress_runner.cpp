@@ -1,0 +1,309 @@
+// SPDX-License-Identifier: MIT
+// Stress runner (issue 8 §1): clips from seeded random inputs over the whole documented input range.
+//
+// Each run draws a custom lying pose (random root orientation, every joint angle uniform within
+// its limits, dropped from 0-1 m), a body of 1.4-2.1 m and 40-130 kg, a slope of 0-15 deg, friction
+// 0.3-1.2 and every style value uniform in its range; writes it as input-file JSON and loads it
+// through the CLI's validated loader, then runs GenerateClip on it. The clip is recorded at 240 fps,
+// the engine's own rate, so every simulated step is measured. Health asserted per run:
+//   - the simulation stayed healthy (the engine's non-finite / exploded-speed flags never set);
+//   - every recorded joint position and rotation is finite;
+//   - a clip that can be measured (MeasureClip, as `rise-gen check`);
+//   - a result: stood, or a "did not stand" outcome with its last phase, at or before max_duration_s.
+// and the two physical bounds:
+//   - no body (box centre) moves faster than kMaxBodySpeed between two steps;
+//   - no box vertex goes deeper than kMaxPenetration below the ground (the slope plane).
+// Standing is reported (stand rate, seeds that did not stand, outcomes histogram), not asserted.
+//
+//   stress_runner [--count N] [--first-seed S] [--jobs J] [--max-duration SECONDS] [--seeds a,b,c]
+//                 [--bounds assert|report]
+// Exit 0 when every run is healthy, 1 when any run is not (listed with its seed and input); the
+// two physical bounds (body speed, box depth) count too unless `--bounds report`. 2 for bad
+// arguments. Runs are a pure function of their seed, so a failing seed reproduces with
+// `--seeds <seed>`.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/clip_check.h"
+#include "core/clip_quality.h"
+#include "core/generate.h"
+#include "core/input_json.h"
+
+namespace {
+
+// A body falling from the highest start (a 2.1 m body upside down, its feet 2.1 m up, dropped 1 m)
+// reaches sqrt(2 g 3.1 m) = 7.8 m/s; a get-up moves limbs far slower. Faster is an explosion.
+constexpr double kMaxBodySpeed = 10.0;    // m/s, the centre of any box
+constexpr double kMaxPenetration = 0.02;  // m, below the ground plane, any box vertex
+constexpr double kRecordFps = 240.0;      // the engine's step rate (physics/settings.h)
+
+struct Options {
+  int count = 100;
+  uint64_t firstSeed = 1;
+  int jobs = 0;
+  double maxDuration = 20.0;
+  std::vector<uint64_t> seeds;  // explicit seeds replace count/firstSeed
+  bool assertBounds = true;     // false: physical bounds broken are reported, not failed
+};
+
+struct RunResult {
+  uint64_t seed = 0;
+  std::string input;  // the resolved input, to reproduce with `rise-gen`
+  bool stood = false;
+  double timeToStand = -1.0;
+  double simulated = 0.0;
+  std::string outcome;
+  std::vector<std::string> violations;  // broken health (tier 3) or result rules; empty when healthy
+  std::vector<std::string> overBounds;  // physical bounds broken (body speed, box depth)
+  double maxBodySpeed = 0.0;
+  double maxPenetration = 0.0;
+  double wallSeconds = 0.0;
+};
+
+double Uniform(std::mt19937_64& rng, double lo, double hi) {
+  return std::uniform_real_distribution<double>(lo, hi)(rng);
+}
+
+// Rounded to 0.001 so the JSON input reads as a person would write it.
+double Round3(double value) {
+  return std::round(value * 1000.0) / 1000.0;
+}
+
+// The input file of one seed, drawn over the documented ranges of issue 8 §1.
+nlohmann::ordered_json RandomInput(uint64_t seed, double maxDuration) {
+  std::mt19937_64 rng(seed);
+  nlohmann::ordered_json input;
+  const double height = Round3(Uniform(rng, 1.4, 2.1));
+  const double mass = Round3(Uniform(rng, 40.0, 130.0));
+  input["character"] = {{"height_m", height}, {"mass_kg", mass}};
+  nlohmann::ordered_json joints = nlohmann::ordered_json::object();
+  const rise::BipedDef def = rise::MakeBipedDef(static_cast<float>(height), static_cast<float>(mass));
+  for (int j = 0; j < def.skeleton.JointCount(); ++j) {
+    if (def.DofCount(j) == 0) continue;
+    nlohmann::ordered_json angles = nlohmann::ordered_json::array();
+    for (const rise::JointDof& dof : def.bones[j].dofs) angles.push_back(Round3(Uniform(rng, dof.minDeg, dof.maxDeg)));
+    joints[def.skeleton.joints[j].name] = angles;
+  }
+  input["start"] = {
+      {"posture", "custom"},
+      {"root_euler_deg",
+       {Round3(Uniform(rng, -180, 180)), Round3(Uniform(rng, -180, 180)), Round3(Uniform(rng, -180, 180))}},
+      {"joints_deg", joints},
+      {"drop_height_m", Round3(Uniform(rng, 0.0, 1.0))}};
+  input["terrain"] = {{"slope_deg", Round3(Uniform(rng, 0.0, 15.0))}, {"friction", Round3(Uniform(rng, 0.3, 1.2))}};
+  input["style"] = {
+      {"speed", Round3(Uniform(rng, 0.25, 3.0))},         {"step_height_m", Round3(Uniform(rng, 0.02, 0.3))},
+      {"stance_width_m", Round3(Uniform(rng, 0.1, 0.6))}, {"sway", Round3(Uniform(rng, 0.0, 1.0))},
+      {"swivel_deg", Round3(Uniform(rng, -45.0, 45.0))},  {"tiredness", Round3(Uniform(rng, 0.0, 1.0))},
+      {"look_around", Round3(Uniform(rng, 0.0, 1.0))}};
+  input["seed"] = seed;
+  input["fps"] = kRecordFps;
+  input["max_duration_s"] = maxDuration;
+  return input;
+}
+
+bool Finite(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+std::string Format(const char* format, double a, double b = 0.0) {
+  char text[160];
+  std::snprintf(text, sizeof text, format, a, b);
+  return text;
+}
+
+RunResult Run(uint64_t seed, double maxDuration) {
+  const auto start = std::chrono::steady_clock::now();
+  RunResult run;
+  run.seed = seed;
+  run.input = RandomInput(seed, maxDuration).dump();
+  const rise::Result<rise::RiseSpec> spec = rise::ParseRiseSpec(run.input, "seed " + std::to_string(seed));
+  if (!spec) {
+    run.violations.push_back("input rejected: " + spec.Error().Format());
+    return run;
+  }
+  const rise::GeneratedClip generated = rise::GenerateClip(spec.Value());
+  run.stood = generated.stood;
+  run.timeToStand = generated.timeToStand;
+  run.simulated = generated.simulatedSeconds;
+  run.outcome = generated.outcome;
+  if (!generated.health.ok) run.violations.push_back("unhealthy simulation: " + generated.health.message);
+
+  const std::vector<std::vector<glm::vec3>> positions = rise::JointPositionSequence(generated.clip);
+  bool finite = true;
+  for (const auto& frame : positions) {
+    for (const glm::vec3& p : frame) finite = finite && Finite(p);
+  }
+  for (const auto& track : generated.clip.rotations) {
+    for (const glm::quat& q : track) finite = finite && std::isfinite(q.w) && Finite(glm::vec3(q.x, q.y, q.z));
+  }
+  if (!finite) run.violations.push_back("non-finite joint position or rotation in the clip");
+  // Body speeds: the centre of every box (one per simulated body), frame to frame.
+  size_t fastBody = 0, fastFrame = 0;
+  std::vector<glm::vec3> previous;
+  for (int f = 0; f < generated.clip.FrameCount() && finite; ++f) {
+    const std::vector<glm::quat> rotations = generated.clip.WorldRotations(f);
+    std::vector<glm::vec3> centres(positions[f].size(), glm::vec3(0.0f));
+    for (size_t j = 0; j < centres.size(); ++j) {
+      const rise::SkeletonJoint& joint = generated.clip.skeleton.joints[j];
+      if (!joint.hasBox) continue;
+      centres[j] = positions[f][j] + rotations[j] * joint.box.center;
+      const double speed = f == 0 ? 0.0 : static_cast<double>(glm::length(centres[j] - previous[j])) * kRecordFps;
+      if (speed > run.maxBodySpeed) run.maxBodySpeed = speed, fastBody = j, fastFrame = static_cast<size_t>(f);
+    }
+    previous = centres;
+  }
+  if (run.maxBodySpeed > kMaxBodySpeed) {
+    run.overBounds.push_back("body '" + generated.clip.skeleton.joints[fastBody].name + "' " +
+                             Format("moved at %.2f m/s at %.3f s", run.maxBodySpeed, fastFrame / kRecordFps) +
+                             Format(" (bound %.0f m/s)", kMaxBodySpeed));
+  }
+  if (finite) {
+    const rise::QualityReport quality = rise::MeasureClip(generated.clip, rise::QualityOptionsFor(generated.clip));
+    run.maxPenetration = quality.maxPenetration;
+    if (!quality.error.empty()) run.violations.push_back("clip cannot be measured: " + quality.error);
+    if (quality.maxPenetration > kMaxPenetration) {
+      run.overBounds.push_back("box of '" + quality.penetrationJoint + "' " +
+                               Format("%.1f cm below ground at %.3f s", 100.0 * quality.maxPenetration,
+                                      quality.penetrationFrame / kRecordFps));
+    }
+  }
+  const bool didNotStand =
+      run.outcome.rfind("did not stand within", 0) == 0 && run.outcome.find("last phase") != std::string::npos;
+  if (generated.health.ok && !run.stood && !didNotStand) {
+    run.violations.push_back("no clear result: outcome \"" + run.outcome + "\"");
+  }
+  if (run.simulated > maxDuration + 1.0 / kRecordFps) {
+    run.violations.push_back(Format("simulated %.3f s, past max_duration_s %.1f", run.simulated, maxDuration));
+  }
+  run.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+// The outcome with its numbers left out, so like outcomes count together.
+std::string OutcomeKind(const RunResult& run) {
+  if (!run.violations.empty()) return "health violation";
+  if (run.stood) return "stood";
+  const size_t phase = run.outcome.find("(last phase:");
+  return phase == std::string::npos ? run.outcome : "did not stand " + run.outcome.substr(phase);
+}
+
+bool ParseArgs(int argc, char** argv, Options& options) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (i + 1 >= argc) return false;
+    const std::string value = argv[++i];
+    char* end = nullptr;
+    if (arg == "--count") {
+      options.count = static_cast<int>(std::strtol(value.c_str(), &end, 10));
+    } else if (arg == "--first-seed") {
+      options.firstSeed = std::strtoull(value.c_str(), &end, 10);
+    } else if (arg == "--jobs") {
+      options.jobs = static_cast<int>(std::strtol(value.c_str(), &end, 10));
+    } else if (arg == "--max-duration") {
+      options.maxDuration = std::strtod(value.c_str(), &end);
+    } else if (arg == "--bounds") {
+      if (value != "assert" && value != "report") return false;
+      options.assertBounds = value == "assert";
+      end = const_cast<char*>(value.c_str() + value.size());
+    } else if (arg == "--seeds") {
+      std::stringstream list(value);
+      std::string item;
+      while (std::getline(list, item, ',')) options.seeds.push_back(std::strtoull(item.c_str(), nullptr, 10));
+      end = const_cast<char*>(value.c_str() + value.size());
+    } else {
+      return false;
+    }
+    if (end == nullptr || *end != '\0') return false;
+  }
+  return options.count > 0 && options.jobs >= 0 && options.maxDuration >= 1.0 && options.maxDuration <= 120.0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (!ParseArgs(argc, argv, options)) {
+    std::fprintf(stderr,
+                 "usage: stress_runner [--count N] [--first-seed S] [--jobs J] [--max-duration 1..120] "
+                 "[--seeds a,b,c] [--bounds assert|report]\n");
+    return 2;
+  }
+  std::vector<uint64_t> seeds = options.seeds;
+  if (seeds.empty()) {
+    for (int i = 0; i < options.count; ++i) seeds.push_back(options.firstSeed + i);
+  }
+  const int jobs = options.jobs > 0 ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
+
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<RunResult> results(seeds.size());
+  std::atomic<size_t> next{0};
+  std::mutex printing;
+  std::vector<std::thread> workers;
+  for (int w = 0; w < jobs; ++w) {
+    workers.emplace_back([&] {
+      for (size_t i = next++; i < seeds.size(); i = next++) {
+        results[i] = Run(seeds[i], options.maxDuration);
+        const RunResult& run = results[i];
+        if (!run.violations.empty() || !run.overBounds.empty()) {
+          const std::lock_guard<std::mutex> lock(printing);
+          std::printf("seed %llu", static_cast<unsigned long long>(seeds[i]));
+          for (const std::string& v : run.violations) std::printf(" VIOLATION: %s;", v.c_str());
+          for (const std::string& v : run.overBounds) std::printf(" OVER BOUND: %s;", v.c_str());
+          std::printf("\n  input: %s\n", run.input.c_str());
+          std::fflush(stdout);
+        }
+      }
+    });
+  }
+  for (std::thread& worker : workers) worker.join();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::map<std::string, std::vector<uint64_t>> kinds;
+  int stood = 0, violations = 0;
+  std::vector<uint64_t> overBounds;
+  double slowest = 0.0, fastestSpeed = 0.0, deepest = 0.0;
+  for (const RunResult& run : results) {
+    kinds[OutcomeKind(run)].push_back(run.seed);
+    stood += run.stood ? 1 : 0;
+    violations += run.violations.empty() ? 0 : 1;
+    if (!run.overBounds.empty()) overBounds.push_back(run.seed);
+    slowest = std::max(slowest, run.wallSeconds);
+    fastestSpeed = std::max(fastestSpeed, run.maxBodySpeed);
+    deepest = std::max(deepest, run.maxPenetration);
+  }
+  const size_t n = results.size();
+  std::printf(
+      "stress: %zu random starts (seeds %llu..), max_duration_s %.0f, %d threads, %.1f s wall (slowest run %.1f s)\n",
+      n, static_cast<unsigned long long>(seeds.front()), options.maxDuration, jobs, wall, slowest);
+  std::printf("stand rate: %d / %zu (%.1f %%)\n", stood, n, 100.0 * stood / static_cast<double>(n));
+  std::printf("outcomes:\n");
+  for (const auto& [kind, list] : kinds) {
+    std::printf("  %5zu  %s; seeds", list.size(), kind.c_str());
+    for (size_t i = 0; i < list.size() && i < 12; ++i) std::printf(" %llu", static_cast<unsigned long long>(list[i]));
+    std::printf(list.size() > 12 ? " ...\n" : "\n");
+  }
+  std::printf("health: %d run(s) unhealthy or without a clear result\n", violations);
+  std::printf(
+      "bounds: %zu run(s) over a physical bound (%s); fastest body %.2f m/s (bound %.0f), deepest box %.2f cm "
+      "(bound %.0f)",
+      overBounds.size(), options.assertBounds ? "asserted" : "reported only", fastestSpeed, kMaxBodySpeed,
+      100.0 * deepest, 100.0 * kMaxPenetration);
+  if (!overBounds.empty()) std::printf("; seeds");
+  for (uint64_t seed : overBounds) std::printf(" %llu", static_cast<unsigned long long>(seed));
+  std::printf("\n");
+  const bool failed = violations > 0 || (options.assertBounds && !overBounds.empty());
+  return failed ? 1 : 0;
+}
