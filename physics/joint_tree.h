@@ -56,11 +56,13 @@ struct JointTree {
 // every joint's pointInTree; with active false it only clears them.
 void BuildJointTree(JointTree& tree, std::vector<Joint>& joints, int bodyCount, bool active);
 
-// Factorises the forest at the bodies' present poses and the joints' present lever arms.
+// Factorises the forest at the bodies' present poses and the joints' present lever arms (the
+// solver does this after every position integration, when it refreshes the lever arms).
 void FactorJointTree(JointTree& tree, const std::vector<Joint>& joints, const std::vector<Body>& bodies);
 
 // Applies the impulses that make every tree joint's anchor velocity Cdot + biasRate C zero
-// (biasRate 0 without bias) and adds them to the joints' linearImpulse.
+// (biasRate 0: no bias) and adds them to the joints' linearImpulse. Exact when the lever arms
+// are those of the last FactorJointTree.
 void SolveJointTree(JointTree& tree, std::vector<Joint>& joints, std::vector<Body>& bodies, const Body& staticBody,
                     float biasRate);
 

@@ -49,6 +49,10 @@ struct WorldSettings {
 
   // The default keeps every result bit-identical to the engine the controller was tuned on.
   JointSolver jointSolver = JointSolver::kSequentialImpulse;
+  // kDirectTree only: the fraction of the anchors' separation the biased solve removes per
+  // sub-step (dimensionless, 0..1). The exact solve is stable at any value and the relax pass
+  // takes the correcting velocity back out, so this sets only how fast drift closes.
+  float jointTreeErrorReduction = 0.5f;
 
   // Contacts are created while the surfaces are closer than this, so a fast body is stopped
   // before it passes into the ground (speculative contacts), m.

@@ -83,12 +83,13 @@ void Solve(WorldState& state, const SolverContext& context, bool useBias) {
   // overlap (soft, and the next pass corrects it) where an open joint would show on screen.
   if (state.jointTree.active) {
     SolveJointTree(state.jointTree, state.joints, state.bodies, state.staticBody,
-                   useBias ? context.jointSoftness.biasRate : 0.0f);
+                   useBias ? state.settings.jointTreeErrorReduction * context.invH : 0.0f);
   }
 }
 
-// Moves the bodies, then refreshes the joints' pose-dependent rows once for every pass that
-// sees these poses (this sub-step's relax, the next sub-step's warm start and solve).
+// Moves the bodies, then refreshes the joints' pose-dependent rows (and the joint forest's
+// factorisation) once for every pass that sees these poses (this sub-step's relax, the next
+// sub-step's warm start and solve).
 void IntegratePositions(WorldState& state, const SolverContext& context) {
   for (Body& body : state.bodies) IntegratePosition(body, context.h);
   for (Joint& joint : state.joints) {
