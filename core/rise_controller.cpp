@@ -66,6 +66,10 @@ constexpr float kComWeight = 1.0f;
 constexpr float kComHeightShare = 0.2f;  // of kComWeight, for the CoM's height
 constexpr float kPitchWeight = 0.02f;
 constexpr float kMaxHeelLift = 1.2f;  // rad a foot on its toes may lift its heel
+// The spine curls forward (chest pitched down from the pelvis) so the pelvis can
+// sit back over the feet while the hands stay on the ground; gently preferred straight.
+constexpr float kMinCurl = -0.15f, kMaxCurl = 1.2f;  // rad
+constexpr float kCurlWeight = 0.05f;
 // CoM feedback on hands and feet: proportional gain, integral gain (1/s), integral bound.
 constexpr float kCrawlComGain = 0.5f;
 constexpr float kCrawlComIntegral = 1.0f;
@@ -76,8 +80,9 @@ constexpr float kLeanRate = 0.8f;         // rad/s the balance lean may change
 // The feet walk in while the hands are farther than this ahead of them (from
 // nearer, a foot can hardly come further under a body bent at the hips); a
 // foot step is at most kFootStep long.
-constexpr float kFootWalkDistance = 0.85f;  // m
+constexpr float kFootWalkDistance = 0.95f;  // m
 constexpr float kFootStep = 0.3f;          // m
+constexpr float kFootLead = 0.1f;          // m
 
 bool IsArm(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kHandRight; }
 bool IsLeft(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kFootLeft; }
@@ -100,8 +105,10 @@ glm::quat FromAxes(const glm::vec3& x, const glm::vec3& y) {
   return glm::normalize(glm::quat_cast(glm::mat3(x, y, glm::cross(x, y))));
 }
 
-// Solves the n x n system a x = b (a symmetric positive definite) by Cholesky.
-std::array<float, 5> SolveSymmetric(std::array<std::array<float, 5>, 5> a, std::array<float, 5> b, int n) {
+// Solves a x = b (a symmetric positive definite) by Cholesky.
+template <size_t N>
+std::array<float, N> SolveSymmetric(std::array<std::array<float, N>, N> a, std::array<float, N> b) {
+  const int n = static_cast<int>(N);
   for (int j = 0; j < n; ++j) {
     for (int k = 0; k < j; ++k) a[j][j] -= a[j][k] * a[j][k];
     a[j][j] = std::sqrt(std::max(a[j][j], 1e-12f));
@@ -331,9 +338,13 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
   // CoM as close to the goal as that allows. Planning only reachable poses is
   // what keeps the servos from fighting the ground: an out-of-reach goal
   // turns into slipping feet and buckling arms.
-  const glm::vec3 startUp = move.from.pelvisRotation * kUp;
-  const float startPitch = std::atan2(glm::dot(startUp, kUp), glm::dot(startUp, heading_));
-  constexpr int kUnknowns = 5, kResiduals = 3 + 3 * kLimbCount + 2 + 1;
+  auto pitchOf = [&](const glm::quat& q) {
+    const glm::vec3 up = q * kUp;
+    return std::atan2(glm::dot(up, kUp), glm::dot(up, heading_));
+  };
+  const float startPitch = pitchOf(move.from.pelvisRotation);
+  const float startCurl = std::clamp(startPitch - pitchOf(move.from.chestRotation), kMinCurl, kMaxCurl);
+  constexpr int kUnknowns = 6, kResiduals = 3 + 3 * kLimbCount + 2 + 2;
   using Unknowns = std::array<float, kUnknowns>;
   using Residuals = std::array<float, kResiduals>;
   std::vector<int> heels;
@@ -342,7 +353,8 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
   }
   auto apply = [&](const Unknowns& x, Move& probe) {
     probe.to.pelvis = glm::vec3(x[0], x[1], x[2]);
-    probe.to.pelvisRotation = probe.to.chestRotation = TrunkRotation(heading_, x[3]);
+    probe.to.pelvisRotation = TrunkRotation(heading_, x[3]);
+    probe.to.chestRotation = TrunkRotation(heading_, x[3] - std::clamp(x[5], kMinCurl, kMaxCurl));
     for (int i : heels) probe.limbs[i].toRotation = FootRotation(heading_, std::clamp(x[4], 0.0f, kMaxHeelLift));
   };
   auto residuals = [&](const Unknowns& x) {
@@ -368,7 +380,8 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
       const float reach = glm::length(LimbRoot(def_.skeleton, rig_, goal, static_cast<Limb>(i)) - goal.limbs[i].target);
       r[3 + 3 * kLimbCount + i] = kStraightArmWeight * (reach - kSupportArmReach * armReach_);
     }
-    r[kResiduals - 1] = kPitchWeight * (x[3] - startPitch);
+    r[kResiduals - 2] = kPitchWeight * (x[3] - startPitch);
+    r[kResiduals - 1] = kCurlWeight * x[5];
     return r;
   };
   auto cost = [](const Residuals& r) {
@@ -382,13 +395,12 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
     const glm::vec3 footUp = move.limbs[i].toRotation * kUp;
     heel += std::acos(std::clamp(glm::dot(footUp, ground_.normal), -1.0f, 1.0f)) / static_cast<float>(heels.size());
   }
-  Unknowns x{move.from.pelvis.x, move.from.pelvis.y, move.from.pelvis.z, startPitch, heel};
-  const int unknowns = heels.empty() ? 4 : 5;
+  Unknowns x{move.from.pelvis.x, move.from.pelvis.y, move.from.pelvis.z, startPitch, heel, startCurl};
   Residuals r = residuals(x);
   float lambda = 1e-3f;
   for (int iteration = 0; iteration < 25; ++iteration) {
     std::array<Residuals, kUnknowns> jacobian{};
-    for (int u = 0; u < unknowns; ++u) {
+    for (int u = 0; u < kUnknowns; ++u) {
       Unknowns probe = x;
       constexpr float kStep = 1e-3f;
       probe[u] += kStep;
@@ -397,19 +409,19 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
     }
     std::array<std::array<float, kUnknowns>, kUnknowns> normal{};
     std::array<float, kUnknowns> gradient{};
-    for (int a = 0; a < unknowns; ++a) {
+    for (int a = 0; a < kUnknowns; ++a) {
       for (int k = 0; k < kResiduals; ++k) gradient[a] += jacobian[a][k] * r[k];
-      for (int b = 0; b < unknowns; ++b) {
+      for (int b = 0; b < kUnknowns; ++b) {
         for (int k = 0; k < kResiduals; ++k) normal[a][b] += jacobian[a][k] * jacobian[b][k];
       }
     }
     bool improved = false;
     for (int attempt = 0; attempt < 6 && !improved; ++attempt) {
       std::array<std::array<float, kUnknowns>, kUnknowns> damped = normal;
-      for (int a = 0; a < unknowns; ++a) damped[a][a] += lambda * (1.0f + normal[a][a]);
-      const std::array<float, kUnknowns> delta = SolveSymmetric(damped, gradient, unknowns);
+      for (int a = 0; a < kUnknowns; ++a) damped[a][a] += lambda * (1.0f + normal[a][a]);
+      const std::array<float, kUnknowns> delta = SolveSymmetric(damped, gradient);
       Unknowns next = x;
-      for (int a = 0; a < unknowns; ++a) next[a] -= delta[a];
+      for (int a = 0; a < kUnknowns; ++a) next[a] -= delta[a];
       const Residuals trial = residuals(next);
       if (cost(trial) < cost(r)) {
         x = next, r = trial, lambda = std::max(1e-5f, lambda * 0.3f), improved = true;
@@ -520,7 +532,15 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
     // planted limbs turn into a shift of the whole body.
     glm::vec3 error = PoseCom(goal) - reading.com;
     error -= ground_.normal * glm::dot(error, ground_.normal);
-    goal.pelvisPosition += kCrawlComGain * error + crawlOffset_;
+    // Only as far as every hand and foot can still reach its place: past that
+    // the servos would be asked for a pose whose feet are off their spots.
+    const glm::vec3 planned = goal.pelvisPosition;
+    glm::vec3 shift = kCrawlComGain * error + crawlOffset_;
+    for (int halving = 0; halving < 6; ++halving, shift *= 0.5f) {
+      goal.pelvisPosition = planned + shift;
+      if (LimbsReach(move, goal)) break;
+      goal.pelvisPosition = planned;
+    }
   }
   if (move.keepComOverFeet && balance && !reading.jointPositions.empty()) {
     // Primary constraint of Phase 2: the whole-body CoM over the feet. The
@@ -898,7 +918,10 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       m.lift = 0.0f;
     } else {
       const float handsAhead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
-      const float length = fraction * std::clamp(handsAhead - kFootWalkDistance + 0.05f, 0.1f, kFootStep);
+      // Feet come in side by side: a step ends at most kFootLead ahead of the other foot.
+      const Limb other = limb == Limb::kFootLeft ? Limb::kFootRight : Limb::kFootLeft;
+      const float behindOther = glm::dot(r.jointPositions[rig_.end[static_cast<int>(other)]] - r.jointPositions[rig_.end[i]], heading_);
+      const float length = fraction * std::clamp(std::min(handsAhead - kFootWalkDistance + 0.05f, behindOther + kFootLead), 0.05f, kFootStep);
       // From the ankle, not the toe: with no hip twist the foot's yaw follows the
       // leg, so its toe can sit to one side, and stepping from there walked
       // the feet apart.
@@ -914,8 +937,9 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   return best;
 }
 
-bool RiseController::Reachable(const Move& move) const {
-  const PoseGoal goal = GoalAt(move, 1.0f, BodyReading{});
+bool RiseController::Reachable(const Move& move) const { return LimbsReach(move, GoalAt(move, 1.0f, BodyReading{})); }
+
+bool RiseController::LimbsReach(const Move& move, const PoseGoal& goal) const {
   const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
   for (int i = 0; i < kLimbCount; ++i) {
     if (move.limbs[i].mode != LimbMode::kBody &&

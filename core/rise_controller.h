@@ -121,6 +121,8 @@ class RiseController {
   float CrawlComHeight(const BodyReading& reading) const;
   // Whether the move's end pose puts every held or moving hand and foot on its place.
   bool Reachable(const Move& move) const;
+  // Whether a pose goal puts every held or moving hand and foot of the move on its place.
+  bool LimbsReach(const Move& move, const PoseGoal& goal) const;
   // A move on both hands and both feet, all held where they are.
   Move OnAllFours(const BodyReading& reading, const char* name, double duration) const;
   Move PlanRise(const BodyReading& reading);
