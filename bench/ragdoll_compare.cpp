@@ -8,9 +8,11 @@
 // box corner below y = 0; joint separation = distance between the joint anchor carried by the
 // parent and the one carried by the child.
 //
-// Usage: ragdoll_compare [--reps N] [--engine NAME] [--substeps N] [--direct] [--callgrind]
+// Usage: ragdoll_compare [--reps N] [--engine NAME] [--substeps N] [--iterations N] [--direct] [--callgrind]
 //   --substeps N adds a row "ours_<N>sub": our engine with N sub-steps instead of 4 (what fewer
 //                sub-steps would buy, and cost in quality).
+//   --iterations N  gives those extra rows N biased solve passes per sub-step instead of 1
+//                ("ours_<N>sub_<M>it").
 //   --direct     adds the same rows with JointSolver::kDirectTree ("ours_direct", "ours_<N>sub_direct").
 //   --callgrind  re-runs each engine's timed loop under valgrind's callgrind (collecting only
 //                inside RunSteps) and adds instructions per step; the same figure by hand:
@@ -40,6 +42,8 @@ namespace {
 
 // Sub-steps of the extra "ours_<n>sub" row (--substeps); 0 = no such row.
 int gExtraSubsteps = 0;
+// Biased solve passes per sub-step of the extra rows (--iterations); 0 = the default.
+int gExtraIterations = 0;
 // Adds rows with the direct joint-tree solver (--direct).
 bool gDirect = false;
 
@@ -49,6 +53,7 @@ class RiseRagdoll final : public RagdollEngine {
               physics::JointSolver jointSolver = physics::JointSolver::kSequentialImpulse)
       : world_(Settings(timeStep)) {
     if (substeps > 0) world_.Settings().substepCount = substeps;
+    if (substeps > 0 && gExtraIterations > 0) world_.Settings().solveIterations = gExtraIterations;
     world_.Settings().jointSolver = jointSolver;
     built_ = scenes::BuildRagdollDrop(scene, world_);
   }
@@ -93,17 +98,20 @@ struct EngineEntry {
 std::vector<EngineEntry> Engines() {
   std::vector<EngineEntry> engines = {
       {"ours", "rise physics, WorldSettings defaults: 4 sub-steps, 1 solve + 1 relax each", MakeRiseRagdoll}};
+  const std::string n = std::to_string(gExtraSubsteps);
+  const std::string it = gExtraIterations > 0 ? "_" + std::to_string(gExtraIterations) + "it" : "";
+  const std::string itText = gExtraIterations > 0 ? ", " + std::to_string(gExtraIterations) + " solves" : "";
   if (gExtraSubsteps > 0) {
-    const std::string n = std::to_string(gExtraSubsteps);
-    engines.push_back({"ours_" + n + "sub", "ours with " + n + " sub-steps instead of 4 (--substeps; not the default)",
+    engines.push_back({"ours_" + n + "sub" + it,
+                       "ours with " + n + " sub-steps instead of 4" + itText + " (--substeps; not the default)",
                        MakeRiseRagdollExtraSubsteps});
   }
   if (gDirect) {
     engines.push_back({"ours_direct", "ours with the direct joint-tree solver (--direct; not the default)",
                        MakeRiseRagdollDirect});
     if (gExtraSubsteps > 0) {
-      const std::string n = std::to_string(gExtraSubsteps);
-      engines.push_back({"ours_" + n + "sub_direct", "ours with " + n + " sub-steps and the direct joint-tree solver",
+      engines.push_back({"ours_" + n + "sub" + it + "_direct",
+                         "ours with " + n + " sub-steps" + itText + " and the direct joint-tree solver",
                          MakeRiseRagdollExtraSubstepsDirect});
     }
   }
@@ -181,7 +189,8 @@ double CallgrindInstructionsPerStep(const std::string& engine, int substeps, int
   const std::string out = "/tmp/ragdoll_compare." + std::to_string(getpid()) + "." + engine + ".cg";
   const std::string command = "valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*RunSteps*' "
                               "--callgrind-out-file=" + out + " '" + self + "' --engine " + engine +
-                              " --substeps " + std::to_string(substeps) + (gDirect ? " --direct" : "") +
+                              " --substeps " + std::to_string(substeps) + " --iterations " +
+                              std::to_string(gExtraIterations) + (gDirect ? " --direct" : "") +
                               " --reps 1 --timing-only > /dev/null 2>&1";
   if (std::system(command.c_str()) != 0) return 0.0;
   std::ifstream file(out);
@@ -212,6 +221,8 @@ int main(int argc, char** argv) {
       only = argv[++i];
     } else if (arg == "--substeps" && i + 1 < argc) {
       gExtraSubsteps = std::max(0, std::atoi(argv[++i]));
+    } else if (arg == "--iterations" && i + 1 < argc) {
+      gExtraIterations = std::max(0, std::atoi(argv[++i]));
     } else if (arg == "--direct") {
       gDirect = true;
     } else if (arg == "--callgrind") {
@@ -219,7 +230,7 @@ int main(int argc, char** argv) {
     } else if (arg == "--timing-only") {
       timingOnly = true;
     } else {
-      std::fprintf(stderr, "usage: %s [--reps N] [--engine NAME] [--substeps N] [--direct] [--callgrind] [--timing-only]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--reps N] [--engine NAME] [--substeps N] [--iterations N] [--direct] [--callgrind] [--timing-only]\n", argv[0]);
       return 2;
     }
   }
@@ -243,7 +254,7 @@ int main(int argc, char** argv) {
 
   std::printf("ragdoll drop: %zu boxes, %zu joints, drop %.1f m, friction %.1f, %d steps of 1/240 s, median of %d\n",
               scene.boxes.size(), scene.joints.size(), double(scene.dropHeight), double(scene.friction), steps, reps);
-  std::printf("%-17s %9s %9s %12s %12s %10s %10s %12s\n", "engine", "us/step", "x_real", "penetr_mm", "joint_sep_mm",
+  std::printf("%-20s %9s %9s %12s %12s %10s %10s %12s\n", "engine", "us/step", "x_real", "penetr_mm", "joint_sep_mm",
               "pelvis_y_m", "max_v_m/s", "instr/step");
   bool allFinite = true;
   for (const EngineEntry& entry : engines) {
@@ -260,12 +271,12 @@ int main(int argc, char** argv) {
     const double instructions = callgrind ? CallgrindInstructionsPerStep(entry.name, gExtraSubsteps, steps) : 0.0;
     char instructionText[32] = "-";
     if (instructions > 0.0) std::snprintf(instructionText, sizeof(instructionText), "%.0f", instructions);
-    std::printf("%-17s %9.2f %9.0f %12.2f %12.2f %10.4f %10.4f %12s%s\n", entry.name.c_str(), 1e6 * seconds / steps,
+    std::printf("%-20s %9.2f %9.0f %12.2f %12.2f %10.4f %10.4f %12s%s\n", entry.name.c_str(), 1e6 * seconds / steps,
                 double(steps) * double(timeStep) / seconds, 1000.0 * double(quality.peakPenetration),
                 1000.0 * double(quality.peakSeparation), double(quality.finalPelvisHeight),
                 double(quality.finalMaxSpeed), instructionText, quality.finite ? "" : "  (non-finite state)");
     std::fflush(stdout);
   }
-  for (const EngineEntry& entry : engines) std::printf("  %-17s %s\n", entry.name.c_str(), entry.settings.c_str());
+  for (const EngineEntry& entry : engines) std::printf("  %-20s %s\n", entry.name.c_str(), entry.settings.c_str());
   return allFinite ? 0 : 1;
 }
