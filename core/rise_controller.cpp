@@ -34,8 +34,8 @@ constexpr double kStallTime = 1.5;        // s a move may lag beyond kGateStop b
 constexpr int kMaxCrawlSteps = 24;
 // A limb lifts only with the CoM this far inside the other three's support;
 // the shift before it aims kShiftMargin inside, and is tried this many times.
-constexpr float kLiftMargin = 0.015f;  // m
-constexpr float kShiftMargin = 0.04f;  // m
+constexpr float kLiftMargin = 0.03f;  // m
+constexpr float kShiftMargin = 0.06f;  // m
 constexpr int kMaxShiftTries = 2;
 constexpr float kHandLineMargin = 0.15f;  // m the CoM stays behind the hands on hands and feet
 constexpr float kReachTolerance = 0.01f;  // m a planned limb may miss its place by
@@ -45,7 +45,8 @@ constexpr float kRiseMargin = 0.02f;  // m
 // Crawl geometry: how far a hand moves per step, and how far ahead of the feet
 // the hands rest in a squat with the CoM over the feet.
 constexpr float kHandStep = 0.25f;        // m
-constexpr float kSquatHandsAhead = 0.38f; // m
+constexpr float kSquatHandsAhead = 0.35f; // m, from the toes
+constexpr float kSitBackBehindToes = 0.06f; // m the sit-back puts the CoM behind the toe edges
 constexpr float kSquatComRatio = 0.6f;     // CoM height in that squat, of the standing CoM height
 // Supporting arms are kept straight, so the weight goes down the bones and
 // into the elbow's limit instead of through the weak elbow servo.
@@ -80,9 +81,10 @@ constexpr float kLeanRate = 0.8f;         // rad/s the balance lean may change
 // The feet walk in while the hands are farther than this ahead of them (from
 // nearer, a foot can hardly come further under a body bent at the hips); a
 // foot step is at most kFootStep long.
-constexpr float kFootWalkDistance = 0.95f;  // m
+constexpr float kFootWalkDistance = 0.85f;  // m
 constexpr float kFootStep = 0.3f;          // m
 constexpr float kFootLead = 0.1f;          // m
+constexpr float kMinFootStep = 0.06f;      // m: a reachable step shorter than this ends the walk-in
 
 bool IsArm(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kHandRight; }
 bool IsLeft(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kFootLeft; }
@@ -768,6 +770,7 @@ RiseController::Move RiseController::PlanPush(const BodyReading& r) {
   PlanTrunk(move, comGoal, {true, true});
   crawlSteps_ = 0;
   shiftTries_ = 0;
+  feetIn_ = false;
   crawlOffset_ = glm::vec3(0.0f);
   return move;
 }
@@ -787,27 +790,32 @@ RiseController::Move RiseController::OnAllFours(const BodyReading& r, const char
 }
 
 float RiseController::HandsAhead(const BodyReading& r, Limb hand) const {
-  return glm::dot(ContactPoint(r, hand) - FeetCentre(r), heading_);
+  // From the feet's toe edges (where feet on their toes press), along the heading.
+  const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
+  return glm::dot(ContactPoint(r, hand) - toes, heading_);
 }
 
-std::optional<Limb> RiseController::ChooseStep(const BodyReading& r) const {
+std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
   // Phase 1 brings hands and feet together until the CoM can sit over the
-  // feet with the hands still down: the feet walk in while they are far (each
-  // hand step would gain little there), then the hands walk back toward the
-  // feet as the paper's Phase 1 does, the one farther from its place first.
+  // toes with the hands still down (bench/reach_probe: with the hands within
+  // about 0.4 m of the toes): the feet walk in while they are far (each hand
+  // step would gain little there), then the hands walk back toward the feet
+  // as the paper's Phase 1 does. Candidates in order of preference; the
+  // crawl takes the first whose lift it can balance.
   // A step that ended short leaves its limb in the air: it goes down first.
   for (int i = 0; i < kLimbCount; ++i) {
-    if (Clearance(r, static_cast<Limb>(i)) > kLandedClearance) return static_cast<Limb>(i);
+    if (Clearance(r, static_cast<Limb>(i)) > kLandedClearance) return {static_cast<Limb>(i)};
   }
-  const float handsAhead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
-  if (handsAhead > kFootWalkDistance) {
-    const float left = glm::dot(ContactPoint(r, Limb::kFootLeft), heading_);
-    const float right = glm::dot(ContactPoint(r, Limb::kFootRight), heading_);
-    return left < right ? Limb::kFootLeft : Limb::kFootRight;
-  }
-  const Limb hand = HandsAhead(r, Limb::kHandLeft) > HandsAhead(r, Limb::kHandRight) ? Limb::kHandLeft : Limb::kHandRight;
-  if (HandsAhead(r, hand) > kSquatHandsAhead + 0.5f * kHandStep) return hand;
-  return std::nullopt;
+  const float left = HandsAhead(r, Limb::kHandLeft), right = HandsAhead(r, Limb::kHandRight);
+  std::vector<Limb> hands;
+  if (left > kSquatHandsAhead + 0.5f * kHandStep) hands.push_back(Limb::kHandLeft);
+  if (right > kSquatHandsAhead + 0.5f * kHandStep) hands.push_back(Limb::kHandRight);
+  if (hands.size() == 2 && right > left) std::swap(hands[0], hands[1]);
+  if (0.5f * (left + right) <= kFootWalkDistance || feetIn_) return hands;
+  const bool leftBehind = glm::dot(ContactPoint(r, Limb::kFootLeft) - ContactPoint(r, Limb::kFootRight), heading_) < 0.0f;
+  std::vector<Limb> order = {leftBehind ? Limb::kFootLeft : Limb::kFootRight, leftBehind ? Limb::kFootRight : Limb::kFootLeft};
+  order.insert(order.end(), hands.begin(), hands.end());
+  return order;
 }
 
 SupportPolygon RiseController::StanceWithout(const BodyReading& r, Limb lifted) const {
@@ -824,63 +832,92 @@ float RiseController::CrawlComHeight(const BodyReading& r) const {
   return glm::mix(kSquatComRatio * standComHeight_, crawlComHeight_, farFromFeet);
 }
 
+std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading& r, Limb lifted) const {
+  const SupportPolygon stance = StanceWithout(r, lifted);
+  glm::vec3 comGoal;
+  if (IsArm(lifted)) {
+    // The paper's low-dimensional model: both feet and the support hand
+    // fixed, the CoM within every limb's length range, inside their triangle,
+    // as close to the feet as that allows.
+    PointMassPlan plan;
+    plan.com = r.com;
+    plan.footLeft = r.jointPositions[rig_.end[2]];
+    plan.footRight = r.jointPositions[rig_.end[3]];
+    plan.feetRegion = FeetRegion(r);
+    plan.supportHand = ContactPoint(r, OtherHand(lifted));
+    plan.leg = {0.6f * legReach_, legReach_ + 0.1f};
+    plan.arm = {0.6f * armReach_, armReach_ + 0.35f};
+    plan.minHeight = 0.35f * standComHeight_;
+    plan.preferredHeight = CrawlComHeight(r);
+    plan.maxStep = 0.18f;
+    plan.balanceMargin = kShiftMargin;
+    plan.Solve();
+    comGoal = plan.target;
+  } else {
+    // A foot step: into the triangle of both hands and the other foot, but
+    // never near the hands' line: over it the body pivots on its hands.
+    glm::vec2 goal = stance.Closest(Ground(r.com));
+    const glm::vec2 centre = stance.Centroid();
+    const glm::vec2 forward = glm::normalize(Ground(heading_));
+    const float handLine = std::min(glm::dot(Ground(ContactPoint(r, Limb::kHandLeft)), forward),
+                                    glm::dot(Ground(ContactPoint(r, Limb::kHandRight)), forward));
+    for (int k = 0; k < 30 && stance.SignedDistance(goal) > -kShiftMargin; ++k) goal += 0.1f * (centre - goal);
+    goal -= forward * std::max(0.0f, glm::dot(goal, forward) - (handLine - kHandLineMargin));
+    comGoal = Project(ground_, glm::vec3(goal.x, 0.0f, goal.y)) + ground_.normal * CrawlComHeight(r);
+  }
+  Move move = OnAllFours(r, "shift", 0.8);
+  const float toFeet = glm::length(Ground(comGoal) - FeetRegion(r).Centroid());
+  const float heelLift = std::clamp(glm::radians(60.0f) * (toFeet - 0.15f) / 0.6f, 0.0f, glm::radians(60.0f));
+  for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, heelLift);
+  PlanTrunk(move, comGoal, {true, true}, true);
+  const glm::vec3 planned = PoseCom(GoalAt(move, 1.0f, BodyReading{}));
+  if (stance.SignedDistance(Ground(planned)) > -kLiftMargin) return std::nullopt;
+  return move;
+}
+
 RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   if (FeetRegion(r).SignedDistance(Ground(r.com)) < -kRiseMargin || crawlSteps_ >= kMaxCrawlSteps) return PlanRise(r);
-  const std::optional<Limb> step = ChooseStep(r);
-  if (!step) {
-    // Hands and feet are together: the CoM goes over the feet, heels down,
+  const std::vector<Limb> candidates = StepCandidates(r);
+  if (candidates.empty()) {
+    // Hands and feet are together: the CoM goes back over the toes, hips low,
     // the hands still touching; the rise lets go of them once it is there.
     Move move = OnAllFours(r, "sit back", 1.2);
-    const glm::vec3 comGoal = BalancePoint(r) + ground_.normal * (kSquatComRatio * standComHeight_);
+    const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
+    const glm::vec3 comGoal = Project(ground_, toes - heading_ * kSitBackBehindToes) + ground_.normal * (0.45f * standComHeight_);
     PlanTrunk(move, comGoal, {true, true}, true);
     ++crawlSteps_;
     return move;
   }
-  const SupportPolygon stance = StanceWithout(r, *step);
-  const bool balanced = stance.SignedDistance(Ground(r.com)) < -kLiftMargin;
-  if (!balanced && shiftTries_ < kMaxShiftTries) {
-    // Iteration of Phase 1: the CoM moves into the support triangle of the
-    // other three limbs, kShiftMargin inside it, as close as that allows to
-    // where it is (for a hand step: to a point a little nearer the feet, the
-    // paper's secondary goal). PlanTrunk keeps every limb in reach, so a
-    // goal the body cannot make comes back as the nearest it can.
-    ++shiftTries_;
-    glm::vec3 comGoal;
-    if (IsArm(*step)) {
-      // The paper's low-dimensional model: both feet and the support hand
-      // fixed, the CoM within every limb's length range, inside their triangle,
-      // as close to the feet as that allows.
-      PointMassPlan plan;
-      plan.com = r.com;
-      plan.footLeft = r.jointPositions[rig_.end[2]];
-      plan.footRight = r.jointPositions[rig_.end[3]];
-      plan.feetRegion = FeetRegion(r);
-      plan.supportHand = ContactPoint(r, OtherHand(*step));
-      plan.leg = {0.6f * legReach_, legReach_ + 0.1f};
-      plan.arm = {0.6f * armReach_, armReach_ + 0.35f};
-      plan.minHeight = 0.35f * standComHeight_;
-      plan.preferredHeight = CrawlComHeight(r);
-      plan.maxStep = 0.18f;
-      plan.balanceMargin = kShiftMargin;
-      plan.Solve();
-      comGoal = plan.target;
-    } else {
-      // A foot step: into the triangle of both hands and the other foot, but
-      // never near the hands' line: over it the body pivots on its hands.
-      glm::vec2 goal = stance.Closest(Ground(r.com));
-      const glm::vec2 centre = stance.Centroid();
-      const glm::vec2 forward = glm::normalize(Ground(heading_));
-      const float handLine = std::min(glm::dot(Ground(ContactPoint(r, Limb::kHandLeft)), forward),
-                                      glm::dot(Ground(ContactPoint(r, Limb::kHandRight)), forward));
-      for (int k = 0; k < 30 && stance.SignedDistance(goal) > -kShiftMargin; ++k) goal += 0.1f * (centre - goal);
-      goal -= forward * std::max(0.0f, glm::dot(goal, forward) - (handLine - kHandLineMargin));
-      comGoal = Project(ground_, glm::vec3(goal.x, 0.0f, goal.y)) + ground_.normal * CrawlComHeight(r);
+  // The first candidate the CoM is balanced for steps; else the CoM shifts for
+  // the current one, and after kMaxShiftTries the next candidate is tried.
+  std::optional<Limb> step;
+  for (const Limb limb : candidates) {
+    if (StanceWithout(r, limb).SignedDistance(Ground(r.com)) < -kLiftMargin) {
+      step = limb;
+      break;
     }
-    Move move = OnAllFours(r, "shift", 0.8);
-    const float toFeet = glm::length(Ground(comGoal) - FeetRegion(r).Centroid());
-    const float heelLift = std::clamp(glm::radians(60.0f) * (toFeet - 0.15f) / 0.6f, 0.0f, glm::radians(60.0f));
-    for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, heelLift);
-    PlanTrunk(move, comGoal, {true, true}, true);
+  }
+  if (!step) {
+    // Iteration of Phase 1: the CoM moves into the support of the three limbs
+    // that stay, for the first candidate whose planned pose (PlanTrunk keeps
+    // every limb in reach) puts it there; a goal no reachable pose meets is
+    // not tried. When none does, or shifts keep failing to get the body
+    // there, the CoM goes back to the middle of all four supports first.
+    if (shiftTries_ < kMaxShiftTries * static_cast<int>(candidates.size())) {
+      for (size_t k = 0; k < candidates.size(); ++k) {
+        const Limb limb = candidates[(static_cast<size_t>(shiftTries_) / kMaxShiftTries + k) % candidates.size()];
+        if (std::optional<Move> shift = PlanShift(r, limb)) {
+          ++shiftTries_;
+          return *shift;
+        }
+      }
+    }
+    shiftTries_ = 0;
+    Move move = OnAllFours(r, "centre", 0.8);
+    std::vector<glm::vec2> points;
+    for (int i = 0; i < kLimbCount; ++i) points.push_back(Ground(ContactPoint(r, static_cast<Limb>(i))));
+    const glm::vec2 centre = SupportPolygon::FromPoints(points).Centroid();
+    PlanTrunk(move, Project(ground_, glm::vec3(centre.x, 0.0f, centre.y)) + ground_.normal * CrawlComHeight(r), {true, true}, true);
     return move;
   }
   // The step: the limb lifts and swings to its new place on a Bezier path
@@ -933,6 +970,11 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     PlanTrunk(move, r.com, {limb != Limb::kHandLeft, limb != Limb::kHandRight});
     best = move;
     if (putDown || Reachable(move)) break;
+  }
+  // The feet are as far in as this body bent at the hips lets them come: the
+  // hands walk from here.
+  if (!IsArm(limb) && !putDown) {
+    feetIn_ = glm::dot(best.limbs[i].to - best.limbs[i].from, heading_) < kMinFootStep;
   }
   return best;
 }

@@ -112,9 +112,12 @@ class RiseController {
   Move PlanPlace(const BodyReading& reading);
   Move PlanPush(const BodyReading& reading);
   Move PlanCrawl(const BodyReading& reading);
-  // The limb Phase 1 moves next (none: hands and feet are together).
-  std::optional<Limb> ChooseStep(const BodyReading& reading) const;
-  // How far a hand is ahead of the feet along the heading, m.
+  // A move that puts the CoM inside the support of all limbs but `lifted`, if
+  // a reachable pose does.
+  std::optional<Move> PlanShift(const BodyReading& reading, Limb lifted) const;
+  // The limbs Phase 1 may move next, preferred first (none: hands and feet are together).
+  std::vector<Limb> StepCandidates(const BodyReading& reading) const;
+  // How far a hand is ahead of the feet's toe edges along the heading, m.
   float HandsAhead(const BodyReading& reading, Limb hand) const;
   // Ground hull of the contact points of every limb but one.
   SupportPolygon StanceWithout(const BodyReading& reading, Limb lifted) const;
@@ -208,6 +211,7 @@ class RiseController {
   int retries_ = 0;
   int crawlSteps_ = 0;
   int shiftTries_ = 0;
+  bool feetIn_ = false;  // the feet have come in as far as they can
   float landingDepth_ = 0.0f;  // m below where it is that a limb left in the air aims
   bool rollTucked_ = false;
   glm::vec3 heading_{0.0f, 0.0f, 1.0f};
