@@ -182,7 +182,7 @@ RunResult Run(uint64_t seed, double maxDuration) {
   }
   const bool didNotStand =
       run.outcome.rfind("did not stand within", 0) == 0 && run.outcome.find("last phase") != std::string::npos;
-  if (generated.health.ok && !run.stood && !didNotStand) {
+  if (generated.health.ok && (run.stood ? run.timeToStand < 0.0 : !didNotStand)) {
     run.violations.push_back("no clear result: outcome \"" + run.outcome + "\"");
   }
   if (run.simulated > maxDuration + 1.0 / kRecordFps) {
