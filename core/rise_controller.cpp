@@ -71,10 +71,16 @@ constexpr float kMaxHeelLift = 1.2f;  // rad a foot on its toes may lift its hee
 // sit back over the feet while the hands stay on the ground; gently preferred straight.
 constexpr float kMinCurl = -0.15f, kMaxCurl = 1.2f;  // rad
 constexpr float kCurlWeight = 0.05f;
+constexpr float kKneeClearance = 0.15f;  // m the knee joints keep above the ground on hands and feet
 // CoM feedback on hands and feet: proportional gain, integral gain (1/s), integral bound.
 constexpr float kCrawlComGain = 0.5f;
 constexpr float kCrawlComIntegral = 1.0f;
 constexpr float kMaxCrawlOffset = 0.06f;  // m
+// The virtual CoM force on hands and feet: stiffness and damping per kg of body
+// (omega ~3.5 rad/s, critically damped), bounded as a fraction of the weight.
+constexpr float kVirtualStiffness = 12.0f;  // 1/s^2
+constexpr float kVirtualDamping = 7.0f;     // 1/s
+constexpr float kMaxVirtualForce = 0.25f;
 constexpr float kMaxBalanceSlide = 0.1f;  // m the pelvis may slide from its planned place
 constexpr float kMaxBalanceLean = 1.2f;   // rad the trunk may lean forward of its plan
 constexpr float kLeanRate = 0.8f;         // rad/s the balance lean may change
@@ -346,7 +352,7 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
   };
   const float startPitch = pitchOf(move.from.pelvisRotation);
   const float startCurl = std::clamp(startPitch - pitchOf(move.from.chestRotation), kMinCurl, kMaxCurl);
-  constexpr int kUnknowns = 6, kResiduals = 3 + 3 * kLimbCount + 2 + 2;
+  constexpr int kUnknowns = 6, kResiduals = 3 + 3 * kLimbCount + 2 + 2 + 2;
   using Unknowns = std::array<float, kUnknowns>;
   using Residuals = std::array<float, kResiduals>;
   std::vector<int> heels;
@@ -381,6 +387,12 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
       if (!bearingHands[i]) continue;
       const float reach = glm::length(LimbRoot(def_.skeleton, rig_, goal, static_cast<Limb>(i)) - goal.limbs[i].target);
       r[3 + 3 * kLimbCount + i] = kStraightArmWeight * (reach - kSupportArmReach * armReach_);
+    }
+    // Knees stay off the ground: kneeling, the body would rest on joints the
+    // plan does not count as supports.
+    for (int leg = 2; leg < 4; ++leg) {
+      const float height = Height(ground_, pose.worldPositions[rig_.lower[leg]]);
+      r[3 + 3 * kLimbCount + 2 + (leg - 2)] = kReachWeight * std::max(0.0f, kKneeClearance - height);
     }
     r[kResiduals - 2] = kPitchWeight * (x[3] - startPitch);
     r[kResiduals - 1] = kCurlWeight * x[5];
@@ -834,11 +846,28 @@ float RiseController::CrawlComHeight(const BodyReading& r) const {
 
 std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading& r, Limb lifted) const {
   const SupportPolygon stance = StanceWithout(r, lifted);
-  glm::vec3 comGoal;
+  const glm::vec2 forward = glm::normalize(Ground(heading_));
+  // The nearest point kShiftMargin inside the support of the limbs that stay,
+  // from a point a little behind the CoM for a hand step (toward the feet,
+  // the paper's secondary goal), never near the hands' line for a foot step
+  // (over it the body pivots on its hands).
+  auto inside = [&](glm::vec2 from) {
+    glm::vec2 goal = stance.Closest(from);
+    const glm::vec2 centre = stance.Centroid();
+    for (int k = 0; k < 30 && stance.SignedDistance(goal) > -kShiftMargin; ++k) goal += 0.1f * (centre - goal);
+    if (!IsArm(lifted)) {
+      const float handLine = std::min(glm::dot(Ground(ContactPoint(r, Limb::kHandLeft)), forward),
+                                      glm::dot(Ground(ContactPoint(r, Limb::kHandRight)), forward));
+      goal -= forward * std::max(0.0f, glm::dot(goal, forward) - (handLine - kHandLineMargin));
+    }
+    return Project(ground_, glm::vec3(goal.x, 0.0f, goal.y)) + ground_.normal * CrawlComHeight(r);
+  };
+  std::vector<glm::vec3> goals;
   if (IsArm(lifted)) {
     // The paper's low-dimensional model: both feet and the support hand
     // fixed, the CoM within every limb's length range, inside their triangle,
-    // as close to the feet as that allows.
+    // as close to the feet as that allows; then, if no reachable pose gets
+    // there, the nearest balanced point.
     PointMassPlan plan;
     plan.com = r.com;
     plan.footLeft = r.jointPositions[rig_.end[2]];
@@ -852,27 +881,21 @@ std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading&
     plan.maxStep = 0.18f;
     plan.balanceMargin = kShiftMargin;
     plan.Solve();
-    comGoal = plan.target;
+    goals.push_back(plan.target);
+    goals.push_back(inside(Ground(r.com) - forward * 0.05f));
   } else {
-    // A foot step: into the triangle of both hands and the other foot, but
-    // never near the hands' line: over it the body pivots on its hands.
-    glm::vec2 goal = stance.Closest(Ground(r.com));
-    const glm::vec2 centre = stance.Centroid();
-    const glm::vec2 forward = glm::normalize(Ground(heading_));
-    const float handLine = std::min(glm::dot(Ground(ContactPoint(r, Limb::kHandLeft)), forward),
-                                    glm::dot(Ground(ContactPoint(r, Limb::kHandRight)), forward));
-    for (int k = 0; k < 30 && stance.SignedDistance(goal) > -kShiftMargin; ++k) goal += 0.1f * (centre - goal);
-    goal -= forward * std::max(0.0f, glm::dot(goal, forward) - (handLine - kHandLineMargin));
-    comGoal = Project(ground_, glm::vec3(goal.x, 0.0f, goal.y)) + ground_.normal * CrawlComHeight(r);
+    goals.push_back(inside(Ground(r.com)));
   }
-  Move move = OnAllFours(r, "shift", 0.8);
-  const float toFeet = glm::length(Ground(comGoal) - FeetRegion(r).Centroid());
-  const float heelLift = std::clamp(glm::radians(60.0f) * (toFeet - 0.15f) / 0.6f, 0.0f, glm::radians(60.0f));
-  for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, heelLift);
-  PlanTrunk(move, comGoal, {true, true}, true);
-  const glm::vec3 planned = PoseCom(GoalAt(move, 1.0f, BodyReading{}));
-  if (stance.SignedDistance(Ground(planned)) > -kLiftMargin) return std::nullopt;
-  return move;
+  for (const glm::vec3& comGoal : goals) {
+    Move move = OnAllFours(r, "shift", 0.8);
+    const float toFeet = glm::length(Ground(comGoal) - FeetRegion(r).Centroid());
+    const float heelLift = std::clamp(glm::radians(60.0f) * (toFeet - 0.15f) / 0.6f, 0.0f, glm::radians(60.0f));
+    for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, heelLift);
+    PlanTrunk(move, comGoal, {true, true}, true);
+    const glm::vec3 planned = PoseCom(GoalAt(move, 1.0f, BodyReading{}));
+    if (stance.SignedDistance(Ground(planned)) < -kLiftMargin) return move;
+  }
+  return std::nullopt;
 }
 
 RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
@@ -1098,7 +1121,7 @@ glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb) const {
   return Project(ground_, centre + along * offset);
 }
 
-void RiseController::FeedForward(const BodyReading& r, std::vector<glm::vec3>& out) const {
+void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal, std::vector<glm::vec3>& out) const {
   const Skeleton& sk = def_.skeleton;
   out.assign(sk.joints.size(), glm::vec3(0.0f));
   // Only once the body is up on its hands and feet are the supports known;
@@ -1143,7 +1166,17 @@ void RiseController::FeedForward(const BodyReading& r, std::vector<glm::vec3>& o
   if (total <= 0.0f) return;
   const glm::vec3 gravity(0.0f, -9.81f, 0.0f);
   std::array<glm::vec3, kLimbCount> force{};
-  for (int i : supports) force[i] = -gravity * (totalMass_ * share[i] / total);
+  // On hands and feet, a virtual force on the CoM (Coros et al. 2010) pulls it
+  // toward the plan's CoM: a spring-damper shared among the supports like the
+  // weight, its ground forces turned into joint torques with the rest.
+  glm::vec3 virtualForce(0.0f);
+  if (phase_ == RisePhase::kPush || phase_ == RisePhase::kCrawl) {
+    virtualForce = totalMass_ * (kVirtualStiffness * (comGoal - r.com) - kVirtualDamping * r.comVelocity);
+    virtualForce -= ground_.normal * glm::dot(virtualForce, ground_.normal);
+    const float limit = kMaxVirtualForce * totalMass_ * 9.81f;
+    if (glm::length(virtualForce) > limit) virtualForce *= limit / glm::length(virtualForce);
+  }
+  for (int i : supports) force[i] = (virtualForce - gravity * totalMass_) * (share[i] / total);
 
   for (int j = 1; j < sk.JointCount(); ++j) {
     if (!sk.joints[j].hasBox) continue;
@@ -1228,8 +1261,8 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
   // The pose to track.
   out.local.assign(def_.skeleton.joints.size(), glm::quat(1, 0, 0, 0));
   out.gainScale.assign(def_.skeleton.joints.size(), 1.0f);
-  FeedForward(reading, out.feedForward);
   if (!hasMove_) {
+    FeedForward(reading, reading.com, out.feedForward);
     // Settling: servos hold the joints where they are, softly.
     out.local = LocalRotations(def_.skeleton, reading.jointRotations);
     std::fill(out.gainScale.begin(), out.gainScale.end(), 0.3f);
@@ -1237,6 +1270,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     const PoseGoal goal = GoalAt(move_, progress_, reading);
     const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
     out.local = LocalRotations(def_.skeleton, pose.worldRotations);
+    FeedForward(reading, PoseCom(GoalAt(move_, progress_, reading, false)), out.feedForward);
     for (int i = 0; i < 2; ++i) {
       if (planted_[i]) out.gainScale[rig_.end[i]] = kPlantedWristGain;
     }

@@ -179,7 +179,7 @@ class RiseController {
   // on the ground forces of the supports below it, with the body's weight
   // shared among the planted supports so their centre of pressure is under
   // the CoM. Internal torques only: nothing pushes the body from outside.
-  void FeedForward(const BodyReading& reading, std::vector<glm::vec3>& out) const;
+  void FeedForward(const BodyReading& reading, const glm::vec3& comGoal, std::vector<glm::vec3>& out) const;
   // Height of the lowest corner of a hand or foot above the ground, m.
   float Clearance(const BodyReading& reading, Limb limb) const;
   // Where a hand or foot touches the ground: the heel of a hand, the toe edge
