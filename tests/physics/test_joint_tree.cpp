@@ -250,7 +250,7 @@ TEST_SUITE("physics.joint_tree") {
   TEST_CASE("switching the joint solver between steps rebuilds the forest; runs are bit-identical") {
     const scenes::RagdollScene scene = scenes::MakeRagdollDropScene();
     auto run = [&scene](bool switchMidway) {
-      World world(switchMidway ? WorldSettings{} : DirectSettings(4));
+      World world(switchMidway ? WorldSettings{} : DirectSettings(2));
       scenes::BuildRagdollDrop(scene, world);
       std::vector<float> state;
       for (int i = 0; i < 240 * 3; ++i) {
