@@ -39,7 +39,8 @@ constexpr float kShiftMargin = 0.06f;  // m
 constexpr int kMaxShiftTries = 2;
 constexpr float kHandLineMargin = 0.15f;  // m the CoM stays behind the hands on hands and feet
 constexpr float kReachTolerance = 0.01f;  // m a planned limb may miss its place by
-constexpr float kLandedClearance = 0.02f;  // m above the ground a placed hand or foot counts as down
+constexpr float kLandedClearance = 0.02f;
+constexpr float kLandingReach = 0.1f;  // m below the ground a limb being put down aims  // m above the ground a placed hand or foot counts as down
 // Phase 2 starts once the CoM's ground projection is this far inside the feet.
 constexpr float kRiseMargin = 0.02f;  // m
 // Crawl geometry: how far a hand moves per step, and how far ahead of the feet
@@ -955,7 +956,6 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   Move best;
   // A limb left in the air by a short step only goes down where it is.
   const bool putDown = Clearance(r, limb) > kLandedClearance;
-  if (!putDown) landingDepth_ = 0.0f;
   static constexpr std::array<float, 5> kFractions{1.0f, 0.75f, 0.5f, 0.3f, 0.15f};
   for (const float candidate : kFractions) {
     const float fraction = putDown ? 0.0f : candidate;
@@ -969,13 +969,12 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       m.to = WristAbove(limb, spot, m.toRotation);
       m.lift = HandSwingLift(limb);
     } else if (putDown) {
-      // Straight down, turned as it is. The body holding the trunk off its
-      // plan by a few degrees leaves the foot as far above its target each
-      // time, so each try goes deeper by what the last one missed.
-      landingDepth_ += Clearance(r, limb);
+      // Straight down, turned as it is, aiming below the ground: the ground
+      // stops it, and the move ends once it touches.
       m.toRotation = m.fromRotation;
-      m.to = m.from - ground_.normal * (landingDepth_ + 0.003f);
+      m.to = m.from - ground_.normal * (Clearance(r, limb) + kLandingReach);
       m.lift = 0.0f;
+      move.landing = i;
     } else {
       const float handsAhead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
       // Feet come in side by side: a step ends at most kFootLead ahead of the other foot.
@@ -1242,6 +1241,10 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
       balanceOffset_ += error * static_cast<float>(dt) * 1.5f;
       const float limit = 0.05f;
       if (glm::length(balanceOffset_) > limit) balanceOffset_ *= limit / glm::length(balanceOffset_);
+    }
+    if (move_.landing >= 0 && reading.touching[move_.landing] &&
+        Clearance(reading, static_cast<Limb>(move_.landing)) < kLandedClearance) {
+      progress_ = 1.0f;
     }
     const bool stalled = stalledSince_ >= 0.0 && reading.time - stalledSince_ > kStallTime;
     if (stalled) {

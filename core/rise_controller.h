@@ -104,6 +104,7 @@ class RiseController {
     std::array<LimbMove, kLimbCount> limbs;
     bool keepComOverFeet = false;     // re-centre the pelvis so the CoM stays over the feet
     std::array<std::array<float, 2>, 2> legPitches{};  // rising: each leg's shin and thigh pitch at the start
+    int landing = -1;                 // a limb being put down: the move ends when it touches
   };
 
   // Planning (each returns the next move from the measured state).
@@ -212,7 +213,6 @@ class RiseController {
   int crawlSteps_ = 0;
   int shiftTries_ = 0;
   bool feetIn_ = false;  // the feet have come in as far as they can
-  float landingDepth_ = 0.0f;  // m below where it is that a limb left in the air aims
   bool rollTucked_ = false;
   glm::vec3 heading_{0.0f, 0.0f, 1.0f};
   glm::vec3 balanceOffset_{0.0f};
