@@ -43,6 +43,7 @@
 #include "physics/joint_tree.h"
 
 #include "base/assert.h"
+#include "physics/constraint_parts.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>

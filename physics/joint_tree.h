@@ -8,7 +8,6 @@
 #pragma once
 
 #include "physics/body.h"
-#include "physics/constraint_parts.h"
 #include "physics/joint.h"
 
 #include <glm/mat3x3.hpp>
