@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Contacts: resting, friction on a slope, stacking, energy, reported normal forces.
 #include "physics/world.h"
+#include "physics/world_probes.h"
 #include "test_support.h"
 
 #include <glm/geometric.hpp>
@@ -11,21 +12,12 @@
 #include <vector>
 
 using namespace rise::physics;
+using rise::test::LowestCornerHeight;
 
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-float LowestCornerHeight(const World& world, BodyId body, const glm::vec3& up = glm::vec3(0.0f, 1.0f, 0.0f)) {
-  const Transform& t = world.GetTransform(body);
-  const glm::vec3 h = world.GetBox(body).halfExtents;
-  float lowest = 1e9f;
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 sign((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f, (corner & 4) ? 1.0f : -1.0f);
-    lowest = std::min(lowest, glm::dot(up, t.position + t.rotation * (sign * h)));
-  }
-  return lowest;
-}
 
 BodyId AddBox(World& world, glm::vec3 position, glm::vec3 halfExtents, float mass, float friction,
               glm::quat rotation = glm::quat(1.0f, 0.0f, 0.0f, 0.0f)) {

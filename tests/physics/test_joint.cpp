@@ -2,6 +2,7 @@
 // Joints: pendulum period, hanging chain, limits under load, PD motor.
 #include "physics/world.h"
 #include "physics/joint_solver_tags.h"
+#include "physics/world_probes.h"
 #include "test_support.h"
 
 #include <glm/geometric.hpp>
@@ -12,6 +13,8 @@
 #include <vector>
 
 using namespace rise::physics;
+using rise::test::MeasurePendulum;
+using rise::test::PendulumSwing;
 
 namespace {
 
@@ -69,20 +72,9 @@ TEST_SUITE("physics.joint") {
     def.anchor = pivot;
     world.CreateJoint(def);
 
-    // Times of downward zero crossings of the swing angle, linearly interpolated.
-    std::vector<double> crossings;
-    float previous = amplitude;
-    for (int i = 0; i < 240 * 12; ++i) {
-      world.Step();
-      const glm::vec3 r = world.GetTransform(bob).position - pivot;
-      const float angle = std::atan2(r.z, -r.y);
-      if (previous > 0.0f && angle <= 0.0f) {
-        crossings.push_back(world.Time() - world.Settings().timeStep * double(angle / (angle - previous)));
-      }
-      previous = angle;
-    }
-    REQUIRE(crossings.size() >= 5);
-    const double period = (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+    const PendulumSwing swing = MeasurePendulum(world, bob, pivot, glm::vec3(0.0f, 0.0f, 1.0f), 240 * 12);
+    REQUIRE(swing.crossings >= 5);
+    const double period = swing.period;
     const double expected = 2.0 * 3.14159265358979 * std::sqrt(double(length) / 9.81);
     INFO("period " << period << " s, expected " << expected << " s");
     CHECK(std::fabs(period - expected) / expected < 0.01);

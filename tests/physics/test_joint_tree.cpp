@@ -2,6 +2,7 @@
 // The direct joint-tree solver (JointSolver::kDirectTree): exactness, pendulum, chains, loops,
 // the ragdoll drop at 2 sub-steps, energy and determinism.
 #include "physics/world.h"
+#include "physics/world_probes.h"
 #include "scenes/ragdoll_drop.h"
 #include "test_support.h"
 
@@ -16,6 +17,9 @@
 
 using namespace rise;
 using namespace rise::physics;
+using rise::test::LowestCornerHeight;
+using rise::test::MeasurePendulum;
+using rise::test::PendulumSwing;
 
 namespace {
 
@@ -92,16 +96,6 @@ float WorstAnchorSpeed(const World& world, const HangingChain& chain) {
   return worst;
 }
 
-float LowestCorner(const World& world, BodyId body) {
-  const Transform& t = world.GetTransform(body);
-  const glm::vec3 h = world.GetBox(body).halfExtents;
-  float lowest = 1e9f;
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 sign((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f, (corner & 4) ? 1.0f : -1.0f);
-    lowest = std::min(lowest, (t.position + t.rotation * (sign * h)).y);
-  }
-  return lowest;
-}
 
 }  // namespace
 
@@ -132,19 +126,9 @@ TEST_SUITE("physics.joint_tree") {
     def.bodyB = bob;
     def.anchor = pivot;
     world.CreateJoint(def);
-    std::vector<double> crossings;
-    float previous = amplitude;
-    for (int i = 0; i < 240 * 12; ++i) {
-      world.Step();
-      const glm::vec3 r = world.GetTransform(bob).position - pivot;
-      const float angle = std::atan2(r.x, -r.y);
-      if (previous > 0.0f && angle <= 0.0f) {
-        crossings.push_back(world.Time() - world.Settings().timeStep * double(angle / (angle - previous)));
-      }
-      previous = angle;
-    }
-    REQUIRE(crossings.size() >= 5);
-    const double period = (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+    const PendulumSwing swing = MeasurePendulum(world, bob, pivot, glm::vec3(1.0f, 0.0f, 0.0f), 240 * 12);
+    REQUIRE(swing.crossings >= 5);
+    const double period = swing.period;
     const double expected = 2.0 * 3.14159265358979 * std::sqrt(double(length) / 9.81);
     INFO("period " << period << " s, expected " << expected << " s");
     CHECK(std::fabs(period - expected) / expected < 0.005);
@@ -233,7 +217,7 @@ TEST_SUITE("physics.joint_tree") {
     float worstJoint = 0.0f;
     for (int i = 0; i < 240 * 5; ++i) {
       REQUIRE(world.Step().Ok());
-      for (BodyId body : ragdoll.bodies) deepest = std::max(deepest, -LowestCorner(world, body));
+      for (BodyId body : ragdoll.bodies) deepest = std::max(deepest, -LowestCornerHeight(world, body));
       for (JointId joint : ragdoll.joints) worstJoint = std::max(worstJoint, world.GetJointAnchorSeparation(joint));
       maxEnergy = std::max(maxEnergy, world.TotalEnergy());
     }

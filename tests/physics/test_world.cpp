@@ -2,6 +2,7 @@
 // World: determinism, the ragdoll drop, collision filtering, applied forces, health status.
 #include "physics/world.h"
 #include "physics/joint_solver_tags.h"
+#include "physics/world_probes.h"
 #include "scenes/ragdoll_drop.h"
 #include "test_support.h"
 
@@ -16,6 +17,7 @@
 
 using namespace rise;
 using namespace rise::physics;
+using rise::test::LowestCornerHeight;
 
 namespace {
 
@@ -33,16 +35,6 @@ std::vector<float> Snapshot(const World& world) {
   return out;
 }
 
-float LowestCorner(const World& world, BodyId body) {
-  const Transform& t = world.GetTransform(body);
-  const glm::vec3 h = world.GetBox(body).halfExtents;
-  float lowest = 1e9f;
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 sign((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f, (corner & 4) ? 1.0f : -1.0f);
-    lowest = std::min(lowest, (t.position + t.rotation * (sign * h)).y);
-  }
-  return lowest;
-}
 
 }  // namespace
 
@@ -81,7 +73,7 @@ TEST_SUITE("physics.world") {
     bool healthy = true;
     for (int i = 0; i < 240 * 5; ++i) {
       healthy = world.Step().Ok() && healthy;
-      for (BodyId body : ragdoll.bodies) deepest = std::max(deepest, -LowestCorner(world, body));
+      for (BodyId body : ragdoll.bodies) deepest = std::max(deepest, -LowestCornerHeight(world, body));
       for (JointId joint : ragdoll.joints) worstJoint = std::max(worstJoint, world.GetJointAnchorSeparation(joint));
     }
     float maxSpeed = 0.0f;
