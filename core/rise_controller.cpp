@@ -58,6 +58,7 @@ constexpr float kPlantedWristGain = 0.15f;
 // triangle of both feet and one hand contains the CoM with a small lean.
 constexpr float kCrawlHalfStance = 0.26f;  // m
 constexpr int kMaxRetries = 4;
+constexpr float kMaxLimbSpeed = 1.5f;  // m/s, average along a swing
 // Phase 2's balance feedback: how far the pose's CoM goal moves against the
 // capture point's offset from the feet centre.
 constexpr float kCaptureGain = 1.0f;
@@ -601,6 +602,15 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
 
 void RiseController::StartMove(Move move) {
   move.duration /= std::max(0.25, spec_.style.speed) * (1.0 - 0.4 * spec_.style.tiredness);
+  // However fast the style, a hand or foot crossing the world goes no faster
+  // on average than kMaxLimbSpeed (the eased path peaks at about twice that):
+  // a quick style on a long step otherwise whipped limbs past 10 m/s.
+  for (const LimbMove& limb : move.limbs) {
+    if (limb.mode == LimbMode::kToePivot) continue;
+    // (For a limb carried by the trunk, its path relative to the trunk.)
+    const float path = glm::length(limb.to - limb.from) + 2.0f * limb.lift;
+    move.duration = std::max(move.duration, static_cast<double>(path / (kMaxLimbSpeed * std::max(limb.span, 0.1f))));
+  }
   move_ = std::move(move);
   phase_ = move_.phase;
   hasMove_ = true;
