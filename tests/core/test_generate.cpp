@@ -53,12 +53,15 @@ TEST_CASE("a prone body settles, places its hands and feet and pushes up onto th
   CHECK(phases[0] == "settle");
   CHECK(phases[1] == "place");
   CHECK(phases[2] == "push");
-  // Pushed up: the CoM rose from lying (~0.1 m) to the crawl height (half the standing CoM height).
+  // Pushed up: the CoM rose from lying (~0.1 m) most of the way to the crawl height (half the
+  // standing CoM height; the push hands over to the crawl once the pelvis is within the tracking
+  // tolerance of its goal, so a few cm short of it).
   const auto pushEnd = std::find_if(result.trace.begin(), result.trace.end(),
                                     [](const rise::TraceSample& s) { return s.phase == rise::RisePhase::kCrawl; });
   REQUIRE(pushEnd != result.trace.end());
+  const float crawlHeight = 0.5f * rise::MakeBipedDef(rise::RiseSpec{}.character).BindCenterOfMass().y;
   CHECK(result.trace.front().com.y < 0.2f);
-  CHECK(pushEnd->com.y > 0.4f);
+  CHECK(pushEnd->com.y > 0.75f * crawlHeight);
   // All four limbs bear weight in the bear stance the crawl starts from.
   for (bool touching : pushEnd->touching) CHECK(touching);
 }
