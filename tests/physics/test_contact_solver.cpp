@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Contacts: resting, friction on a slope, stacking, energy, reported normal forces.
 #include "physics/world.h"
-#include "physics/world_probes.h"
+#include "physics/world_helpers.h"
 #include "test_support.h"
 
 #include <glm/geometric.hpp>

@@ -2,7 +2,7 @@
 // Joints: pendulum period, hanging chain, limits under load, PD motor.
 #include "physics/world.h"
 #include "physics/joint_solver_tags.h"
-#include "physics/world_probes.h"
+#include "physics/world_helpers.h"
 #include "test_support.h"
 
 #include <glm/geometric.hpp>
@@ -13,6 +13,7 @@
 #include <vector>
 
 using namespace rise::physics;
+using rise::test::AddBox;
 using rise::test::MeasurePendulum;
 using rise::test::PendulumSwing;
 
@@ -20,14 +21,6 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 constexpr float kDegree = kPi / 180.0f;
-
-BodyId AddBox(World& world, glm::vec3 position, glm::vec3 halfExtents, float mass) {
-  BodyDef def;
-  def.box.halfExtents = halfExtents;
-  def.mass = mass;
-  def.transform.position = position;
-  return world.CreateBody(def);
-}
 
 // A 2 kg rod along +z hinged to the world at (0, 1, 0) about world x; gravity turns it to +angle.
 struct HingedRod {

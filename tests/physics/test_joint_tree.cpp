@@ -2,7 +2,7 @@
 // The direct joint-tree solver (JointSolver::kDirectTree): exactness, pendulum, chains, loops,
 // the ragdoll drop at 2 sub-steps, energy and determinism.
 #include "physics/world.h"
-#include "physics/world_probes.h"
+#include "physics/world_helpers.h"
 #include "scenes/ragdoll_drop.h"
 #include "test_support.h"
 
@@ -17,6 +17,7 @@
 
 using namespace rise;
 using namespace rise::physics;
+using rise::test::AddBox;
 using rise::test::LowestCornerHeight;
 using rise::test::MeasurePendulum;
 using rise::test::PendulumSwing;
@@ -28,14 +29,6 @@ WorldSettings DirectSettings(int substeps) {
   settings.jointSolver = JointSolver::kDirectTree;
   settings.substepCount = substeps;
   return settings;
-}
-
-BodyId AddBox(World& world, glm::vec3 position, glm::vec3 halfExtents, float mass) {
-  BodyDef def;
-  def.box.halfExtents = halfExtents;
-  def.mass = mass;
-  def.transform.position = position;
-  return world.CreateBody(def);
 }
 
 // A chain of `links` boxes hanging down from `top` on ball joints. childIsA builds every joint
@@ -95,7 +88,6 @@ float WorstAnchorSpeed(const World& world, const HangingChain& chain) {
   }
   return worst;
 }
-
 
 }  // namespace
 

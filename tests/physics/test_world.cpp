@@ -2,7 +2,7 @@
 // World: determinism, the ragdoll drop, collision filtering, applied forces, health status.
 #include "physics/world.h"
 #include "physics/joint_solver_tags.h"
-#include "physics/world_probes.h"
+#include "physics/world_helpers.h"
 #include "scenes/ragdoll_drop.h"
 #include "test_support.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Measurements the physics tests take of a running world: how low a box reaches, and the period
-// of a swinging pendulum.
+// What the physics tests share: adding a plain box, and measuring a running world (how low a box
+// reaches, the period of a swinging pendulum).
 #pragma once
 
 #include "physics/world.h"
@@ -13,6 +13,15 @@
 #include <vector>
 
 namespace rise::test {
+
+// A box body of the given mass at `position`, unrotated, at rest.
+inline physics::BodyId AddBox(physics::World& world, const glm::vec3& position, const glm::vec3& halfExtents, float mass) {
+  physics::BodyDef def;
+  def.box.halfExtents = halfExtents;
+  def.mass = mass;
+  def.transform.position = position;
+  return world.CreateBody(def);
+}
 
 // Height of a box's lowest corner along `up`, m.
 inline float LowestCornerHeight(const physics::World& world, physics::BodyId body,
