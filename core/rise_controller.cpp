@@ -94,6 +94,9 @@ constexpr float kFootStep = 0.3f;          // m
 constexpr float kFootLead = 0.1f;          // m
 constexpr float kMinFootStep = 0.06f;      // m: a reachable step shorter than this ends the walk-in
 
+// On hands and feet: where the plan is quasi-static and the CoM is held by feedback.
+bool OnHandsAndFeet(RisePhase phase) { return phase == RisePhase::kPush || phase == RisePhase::kCrawl; }
+
 bool IsArm(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kHandRight; }
 bool IsLeft(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kFootLeft; }
 Limb OtherHand(Limb hand) { return hand == Limb::kHandLeft ? Limb::kHandRight : Limb::kHandLeft; }
@@ -541,7 +544,7 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
 
   for (int i = 0; i < kLimbCount; ++i) EvaluateLimb(move.limbs[i], static_cast<Limb>(i), s, goal, goal.limbs[i]);
 
-  if (balance && (move.phase == RisePhase::kPush || move.phase == RisePhase::kCrawl) && !reading.jointPositions.empty()) {
+  if (balance && OnHandsAndFeet(move.phase) && !reading.jointPositions.empty()) {
     // On hands and feet the plan is quasi-static, so where the CoM is matters
     // more than how the trunk is turned: the pelvis goal moves by the measured
     // CoM's horizontal error (and its integral, crawlOffset_), which the
@@ -1179,7 +1182,7 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
   // toward the plan's CoM: a spring-damper shared among the supports like the
   // weight, its ground forces turned into joint torques with the rest.
   glm::vec3 virtualForce(0.0f);
-  if (phase_ == RisePhase::kPush || phase_ == RisePhase::kCrawl) {
+  if (OnHandsAndFeet(phase_)) {
     virtualForce = totalMass_ * (kVirtualStiffness * (comGoal - r.com) - kVirtualDamping * r.comVelocity);
     virtualForce -= ground_.normal * glm::dot(virtualForce, ground_.normal);
     const float limit = kMaxVirtualForce * totalMass_ * 9.81f;
@@ -1234,7 +1237,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     trace_.trackingError = lag;
     if (lag < kGateStop) stalledSince_ = -1.0;
     else if (stalledSince_ < 0.0) stalledSince_ = reading.time;
-    if (move_.phase == RisePhase::kPush || move_.phase == RisePhase::kCrawl) {
+    if (OnHandsAndFeet(move_.phase)) {
       glm::vec3 error = PoseCom(GoalAt(move_, progress_, reading, false)) - reading.com;
       error -= ground_.normal * glm::dot(error, ground_.normal);
       crawlOffset_ += error * static_cast<float>(dt) * kCrawlComIntegral;
@@ -1283,14 +1286,13 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     const PoseGoal goal = GoalAt(move_, progress_, reading);
     const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
     out.local = LocalRotations(def_.skeleton, pose.worldRotations);
-    FeedForward(reading, PoseCom(GoalAt(move_, progress_, reading, false)), out.feedForward);
+    // The plan's CoM is only needed for the virtual force on hands and feet.
+    const glm::vec3 comGoal = OnHandsAndFeet(phase_) ? PoseCom(GoalAt(move_, progress_, reading, false)) : reading.com;
+    FeedForward(reading, comGoal, out.feedForward);
     for (int i = 0; i < 2; ++i) {
       if (planted_[i]) out.gainScale[rig_.end[i]] = kPlantedWristGain;
     }
     trace_.comGoal = PoseCom(goal);
-    trace_.pelvisGoal = goal.pelvisPosition;
-    trace_.pelvisGoalRotation = goal.pelvisRotation;
-    trace_.localGoal = out.local;
     for (int i = 0; i < kLimbCount; ++i) trace_.limbTargets[i] = goal.limbs[i].target;
   }
 

@@ -52,9 +52,6 @@ struct TraceSample {
   std::string move;
   glm::vec3 com{0.0f};
   glm::vec3 comGoal{0.0f};
-  glm::vec3 pelvisGoal{0.0f};
-  glm::quat pelvisGoalRotation{1.0f, 0.0f, 0.0f, 0.0f};
-  std::vector<glm::quat> localGoal;  // the servos' targets, per skeleton joint
   SupportPolygon support;
   float feetDistance = 0.0f;  // CoM ground projection to the feet's soles, m (negative inside)
   std::array<glm::vec3, kLimbCount> limbTargets{};
