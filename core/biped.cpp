@@ -3,6 +3,7 @@
 #include "core/biped.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -205,6 +206,14 @@ Biped::Biped(const BipedDef& def, physics::World& world, const BipedPose& pose, 
     body.mass = def_.bones[j].massKg;
     body.transform = BoxTransform(joint, bind[j]);
     body.friction = friction;
+    if (getenv("NOSELF")) body.categoryBits = 0x2u, body.maskBits = 0x1u;
+    if (getenv("NOARMLEG")) {
+      const std::string& name = joint.name;
+      const bool arm = name.find("arm") != std::string::npos || name.find("hand") != std::string::npos;
+      const bool leg = name.find("thigh") != std::string::npos || name.find("shin") != std::string::npos || name.find("foot") != std::string::npos;
+      body.categoryBits = arm ? 0x4u : leg ? 0x8u : 0x2u;
+      body.maskBits = arm ? ~0x8u : leg ? ~0x4u : ~0u;
+    }
     bodies_[j] = world.CreateBody(body);
   }
   for (int j = 1; j < count; ++j) {

@@ -13,7 +13,10 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstdio>
 #include <cmath>
+#include <utility>
 
 namespace rise {
 namespace {
@@ -46,8 +49,12 @@ constexpr float kRiseMargin = 0.02f;  // m
 // Crawl geometry: how far a hand moves per step, and how far ahead of the feet
 // the hands rest in a squat with the CoM over the feet.
 constexpr float kHandStep = 0.25f;        // m
+// A hand steps back at most this far behind the other: a hand left far ahead
+// holds the CoM forward, out of the triangle the other hand and feet make,
+// so it could never lift in its turn.
+constexpr float kHandStagger = 0.12f;  // m
 constexpr float kSquatHandsAhead = 0.35f; // m, from the toes
-constexpr float kSitBackBehindToes = 0.06f; // m the sit-back puts the CoM behind the toe edges
+static const float kSitBackBehindToes = getenv("SBT") ? atof(getenv("SBT")) : 0.06f; // m the sit-back puts the CoM behind the toe edges
 constexpr float kSquatComRatio = 0.6f;     // CoM height in that squat, of the standing CoM height
 // Supporting arms are kept straight, so the weight goes down the bones and
 // into the elbow's limit instead of through the weak elbow servo.
@@ -56,12 +63,12 @@ constexpr float kSupportArmReach = 1.0f;  // shoulder-to-wrist, of the arm's rea
 constexpr float kPlantedWristGain = 0.15f;
 // Feet at least this far either side of the midline in the crawl, so the
 // triangle of both feet and one hand contains the CoM with a small lean.
-constexpr float kCrawlHalfStance = 0.26f;  // m
+static const float kCrawlHalfStance = getenv("HS") ? atof(getenv("HS")) : 0.26f;  // m
 constexpr int kMaxRetries = 4;
 constexpr float kMaxLimbSpeed = 1.5f;  // m/s, average along a swing
 // Phase 2's balance feedback: how far the pose's CoM goal moves against the
 // capture point's offset from the feet centre.
-constexpr float kCaptureGain = 1.0f;
+static const float kCaptureGain = getenv("CG") ? atof(getenv("CG")) : 1.0f;
 // PlanTrunk's priorities, as weights of its least-squares residuals (per m, rad).
 constexpr float kReachWeight = 30.0f;
 constexpr float kStraightArmWeight = 3.0f;
@@ -89,7 +96,9 @@ constexpr float kLeanRate = 0.8f;         // rad/s the balance lean may change
 // The feet walk in while the hands are farther than this ahead of them (from
 // nearer, a foot can hardly come further under a body bent at the hips); a
 // foot step is at most kFootStep long.
-constexpr float kFootWalkDistance = 0.85f;  // m
+static const float kFootWalkDistance = getenv("FW") ? atof(getenv("FW")) : 0.4f;  // m
+static const float kHandOut = getenv("HO") ? atof(getenv("HO")) : 0.0f;
+static const float kPikeComRatio = getenv("PIKE") ? atof(getenv("PIKE")) : 0.62f;
 constexpr float kFootStep = 0.3f;          // m
 constexpr float kFootLead = 0.1f;          // m
 constexpr float kMinFootStep = 0.06f;      // m: a reachable step shorter than this ends the walk-in
@@ -173,6 +182,8 @@ RiseController::RiseController(const BipedDef& def, const RiseSpec& spec)
   shoulderHalfWidth_ = std::fabs(sk.BindPositions()[rig_.upper[0]].x);
   // The crawl keeps the hips high (a pike), so knees stay off the ground.
   crawlComHeight_ = 0.5f * standComHeight_;
+  // A knee rests on the front of its shin box.
+  kneelHeight_ = sk.joints[rig_.lower[2]].box.halfExtents.z;
   const BoneBox& foot = sk.joints[rig_.end[2]].box;
   toeLocal_ = glm::vec3(0.0f, foot.center.y - foot.halfExtents.y, foot.center.z + foot.halfExtents.z);
   subtree_.assign(sk.joints.size(), {});
@@ -397,7 +408,8 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
     // plan does not count as supports.
     for (int leg = 2; leg < 4; ++leg) {
       const float height = Height(ground_, pose.worldPositions[rig_.lower[leg]]);
-      r[3 + 3 * kLimbCount + 2 + (leg - 2)] = kReachWeight * std::max(0.0f, kKneeClearance - height);
+      r[3 + 3 * kLimbCount + 2 + (leg - 2)] =
+          kReachWeight * (move.kneeling ? height - kneelHeight_ : std::max(0.0f, kKneeClearance - height));
     }
     r[kResiduals - 2] = kPitchWeight * (x[3] - startPitch);
     r[kResiduals - 1] = kCurlWeight * x[5];
@@ -414,7 +426,7 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
     const glm::vec3 footUp = move.limbs[i].toRotation * kUp;
     heel += std::acos(std::clamp(glm::dot(footUp, ground_.normal), -1.0f, 1.0f)) / static_cast<float>(heels.size());
   }
-  Unknowns x{move.from.pelvis.x, move.from.pelvis.y, move.from.pelvis.z, startPitch, heel, startCurl};
+  auto descend = [&](Unknowns x) {
   Residuals r = residuals(x);
   float lambda = 1e-3f;
   for (int iteration = 0; iteration < 25; ++iteration) {
@@ -450,7 +462,18 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
     }
     if (!improved) break;
   }
-  apply(x, move);
+  return std::make_pair(x, cost(r));
+  };
+  // Gauss-Newton only finds the pose nearest the start; the pike that brings
+  // the feet in under a body on its hands lies over a ridge of the knee and
+  // reach terms from a flat trunk, so a piked start is tried as well.
+  auto best = descend({move.from.pelvis.x, move.from.pelvis.y, move.from.pelvis.z, startPitch, heel, startCurl});
+  if (OnHandsAndFeet(move.phase)) {
+    const glm::vec3 hips = Horizontal(comGoal) - heading_ * 0.2f + ground_.normal * (0.85f * legReach_);
+    const auto piked = descend({hips.x, hips.y, hips.z, -0.3f, heel, 0.6f});
+    if (piked.second < best.second) best = piked;
+  }
+  apply(best.first, move);
 }
 
 // ---------------------------------------------------------------------------
@@ -615,6 +638,7 @@ void RiseController::StartMove(Move move) {
     move.duration = std::max(move.duration, static_cast<double>(path / (kMaxLimbSpeed * std::max(limb.span, 0.1f))));
   }
   move_ = std::move(move);
+  if (getenv("DBG")) fprintf(stderr, "  -> move %s (%.2f s)\n", move_.name.c_str(), move_.duration);
   phase_ = move_.phase;
   hasMove_ = true;
   progress_ = 0.0f;
@@ -633,12 +657,17 @@ bool RiseController::Fallen(const BodyReading& r) const {
   const float pelvisHeight = Height(ground_, r.jointPositions[rig_.pelvis]);
   if (phase_ == RisePhase::kCrawl) {
     // Down on the ground again (sitting or lying) with the hands and feet no longer bearing.
+    // (Squatting on both feet with the CoM over them is not down: it is where the crawl ends.)
     const int bearing = static_cast<int>(std::count(r.touching.begin(), r.touching.end(), true));
-    return pelvisHeight < 0.22f * standPelvisHeight_ && bearing < 3;
+    const bool onFeet = r.touching[2] && r.touching[3] && FeetRegion(r).SignedDistance(Ground(r.com)) < 0.0f;
+    return pelvisHeight < 0.22f * standPelvisHeight_ && bearing < 3 && !onFeet;
   }
   if (phase_ != RisePhase::kRise && phase_ != RisePhase::kStand) return false;
+  // A chest folded over the knees is how a rise from a squat starts: down only
+  // with the CoM off the feet as well.
   const glm::vec3 up = r.jointRotations[rig_.chest] * kUp;
-  return pelvisHeight < 0.25f * standPelvisHeight_ || glm::dot(up, kUp) < std::cos(glm::radians(70.0f));
+  const bool offFeet = FeetRegion(r).SignedDistance(Ground(r.com)) > 0.05f;
+  return pelvisHeight < 0.25f * standPelvisHeight_ || (offFeet && glm::dot(up, kUp) < std::cos(glm::radians(70.0f)));
 }
 
 void RiseController::PlanNext(const BodyReading& reading) {
@@ -750,7 +779,7 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
     LimbMove& m = move.limbs[i];
     m = HoldLimb(r, hand, false);
     m.toRotation = PlantedHandRotation(hand);
-    m.to = WristAbove(hand, Project(ground_, shoulder - heading_ * 0.04f), m.toRotation);
+    m.to = WristAbove(hand, Project(ground_, shoulder - heading_ * 0.04f + glm::normalize(glm::cross(kUp, heading_)) * (i == 0 ? kHandOut : -kHandOut)), m.toRotation);
     m.lift = HandSwingLift(hand);
     m.delay = i == 0 ? 0.0f : 0.3f;
     m.span = 0.7f;
@@ -762,7 +791,7 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
     const float side = IsLeft(foot) ? 1.0f : -1.0f;
     const glm::vec3 hip = LimbRoot(def_.skeleton, rig_, trunk, foot);
     const float hipHalf = std::fabs(glm::dot(hip - move.from.pelvis, left));
-    const float halfStance = std::max(0.5f * static_cast<float>(spec_.style.stanceWidthM), kCrawlHalfStance);
+    const float halfStance = getenv("HS") ? kCrawlHalfStance : std::max(0.5f * static_cast<float>(spec_.style.stanceWidthM), kCrawlHalfStance);
     const glm::vec3 toe = Project(ground_, hip - heading_ * (0.9f * legReach_) + left * side * (halfStance - hipHalf));
     LimbMove& m = move.limbs[i];
     m = HoldLimb(r, foot, false);
@@ -796,6 +825,8 @@ RiseController::Move RiseController::PlanPush(const BodyReading& r) {
   PlanTrunk(move, comGoal, {true, true});
   crawlSteps_ = 0;
   shiftTries_ = 0;
+  stepSpot_ = {};
+  kneelStage_ = KneelStage::kNone;
   feetIn_ = false;
   crawlOffset_ = glm::vec3(0.0f);
   return move;
@@ -834,14 +865,21 @@ std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
   }
   const float left = HandsAhead(r, Limb::kHandLeft), right = HandsAhead(r, Limb::kHandRight);
   std::vector<Limb> hands;
-  if (left > kSquatHandsAhead + 0.5f * kHandStep) hands.push_back(Limb::kHandLeft);
-  if (right > kSquatHandsAhead + 0.5f * kHandStep) hands.push_back(Limb::kHandRight);
+  const float least = kSquatHandsAhead + 0.5f * kHandStep;
+  if (left > least && left > right - kHandStagger + 0.05f) hands.push_back(Limb::kHandLeft);
+  if (right > least && right > left - kHandStagger + 0.05f) hands.push_back(Limb::kHandRight);
   if (hands.size() == 2 && right > left) std::swap(hands[0], hands[1]);
+  const float stagger = glm::dot(r.jointPositions[rig_.end[2]] - r.jointPositions[rig_.end[3]], heading_);
+  if (getenv("NOHANDS") && (0.5f * (left + right) <= kFootWalkDistance + kMinFootStep || feetIn_)) {
+    // In: the rear foot comes up beside the other before the CoM goes back over them.
+    if (std::fabs(stagger) > kMinFootStep) return {stagger < 0.0f ? Limb::kFootLeft : Limb::kFootRight};
+    return {};
+  }
   if (0.5f * (left + right) <= kFootWalkDistance || feetIn_) return hands;
-  const bool leftBehind = glm::dot(ContactPoint(r, Limb::kFootLeft) - ContactPoint(r, Limb::kFootRight), heading_) < 0.0f;
-  std::vector<Limb> order = {leftBehind ? Limb::kFootLeft : Limb::kFootRight, leftBehind ? Limb::kFootRight : Limb::kFootLeft};
-  order.insert(order.end(), hands.begin(), hands.end());
-  return order;
+  // Ankles, as the step length measures them (toe edges can sit askew).
+  const bool leftBehind = glm::dot(r.jointPositions[rig_.end[2]] - r.jointPositions[rig_.end[3]], heading_) < 0.0f;
+  // Only the rear foot: the front one could only creep ahead of it.
+  return {leftBehind ? Limb::kFootLeft : Limb::kFootRight};
 }
 
 SupportPolygon RiseController::StanceWithout(const BodyReading& r, Limb lifted) const {
@@ -849,13 +887,47 @@ SupportPolygon RiseController::StanceWithout(const BodyReading& r, Limb lifted) 
   for (int i = 0; i < kLimbCount; ++i) {
     if (i != static_cast<int>(lifted)) points.push_back(Ground(ContactPoint(r, static_cast<Limb>(i))));
   }
+  for (int leg = 2; leg < 4; ++leg) {
+    if (kneelStage_ != KneelStage::kNone && kneelStage_ != KneelStage::kUp && KneeDown(r, leg)) points.push_back(Ground(KneePoint(r, leg)));
+  }
   return SupportPolygon::FromPoints(points);
 }
 
 float RiseController::CrawlComHeight(const BodyReading& r) const {
   // Hips high while the feet are far (a pike), lower into a squat as the CoM nears them.
-  const float farFromFeet = std::clamp(FeetRegion(r).SignedDistance(Ground(r.com)) / 0.5f, 0.0f, 1.0f);
-  return glm::mix(kSquatComRatio * standComHeight_, crawlComHeight_, farFromFeet);
+  // The hips rise into a pike as the feet walk in under them.
+  const float handsAhead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
+  const float in = std::clamp((1.1f - handsAhead) / (1.1f - kFootWalkDistance), 0.0f, 1.0f);
+  return glm::mix(crawlComHeight_, kPikeComRatio * standComHeight_, in);
+}
+
+glm::vec3 RiseController::FootLiftCom(const BodyReading& r, Limb foot) const {
+  // Where the CoM is inside both feet's lift triangles at once (hands and one
+  // foot each): the triangle of the hands and the crossing of the diagonals
+  // from each hand to the opposite foot. Held at its incentre, deepest inside,
+  // either foot can lift in turn without the CoM crossing the body between
+  // steps; and the spot comes from contacts that stay put, not from where the
+  // measured CoM has crept to.
+  const glm::vec2 hl = Ground(ContactPoint(r, Limb::kHandLeft)), hr = Ground(ContactPoint(r, Limb::kHandRight));
+  const glm::vec2 fl = Ground(ContactPoint(r, Limb::kFootLeft)), fr = Ground(ContactPoint(r, Limb::kFootRight));
+  const glm::vec2 d1 = fr - hl, d2 = fl - hr;
+  const float cross = d1.x * d2.y - d1.y * d2.x;
+  glm::vec2 deep = StanceWithout(r, foot).Centroid();
+  if (std::fabs(cross) > 1e-4f) {
+    const glm::vec2 w = hr - hl;
+    const float t = (w.x * d2.y - w.y * d2.x) / cross;
+    if (t > 0.0f && t < 1.0f) {
+      const glm::vec2 x = hl + t * d1;
+      const float a = glm::length(hr - x), b = glm::length(x - hl), c = glm::length(hl - hr);
+      deep = (a * hl + b * hr + c * x) / (a + b + c);
+    }
+  }
+  // Never near the hands' line: over it the body pivots on its hands.
+  const glm::vec2 forward = glm::normalize(Ground(heading_));
+  const float handLine = std::min(glm::dot(hl, forward), glm::dot(hr, forward));
+  static const float margin = getenv("HLM") ? atof(getenv("HLM")) : kHandLineMargin;
+  deep -= forward * std::max(0.0f, glm::dot(deep, forward) - (handLine - margin));
+  return Project(ground_, glm::vec3(deep.x, 0.0f, deep.y)) + ground_.normal * CrawlComHeight(r);
 }
 
 std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading& r, Limb lifted) const {
@@ -898,7 +970,7 @@ std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading&
     goals.push_back(plan.target);
     goals.push_back(inside(Ground(r.com) - forward * 0.05f));
   } else {
-    goals.push_back(inside(Ground(r.com)));
+    goals.push_back(FootLiftCom(r, lifted));
   }
   for (const glm::vec3& comGoal : goals) {
     Move move = OnAllFours(r, "shift", 0.8);
@@ -907,14 +979,124 @@ std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading&
     for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, heelLift);
     PlanTrunk(move, comGoal, {true, true}, true);
     const glm::vec3 planned = PoseCom(GoalAt(move, 1.0f, BodyReading{}));
+    if (getenv("DBG")) fprintf(stderr, "t=%.2f shift for %d: goal (%.2f %.2f %.2f) planned (%.2f %.2f %.2f) margin %.3f reach %d pelvis (%.2f %.2f %.2f)\n", r.time, (int)lifted, comGoal.x, comGoal.y, comGoal.z, planned.x, planned.y, planned.z, -stance.SignedDistance(Ground(planned)), (int)Reachable(move), move.to.pelvis.x, move.to.pelvis.y, move.to.pelvis.z);
     if (stance.SignedDistance(Ground(planned)) < -kLiftMargin) return move;
   }
   return std::nullopt;
 }
 
+RiseController::Move RiseController::PlanKneel(const BodyReading& r) {
+  // Phase 1 on the knees: knees and toes make a support the CoM sits deep
+  // inside, so the hands walk in to the feet without the balance a hand or foot
+  // lifted from hands and feet needs; then the knees come up into a squat on
+  // the toes with the hands still down, from where the CoM goes over the feet.
+  const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
+  const glm::vec3 knees = 0.5f * (KneePoint(r, 2) + KneePoint(r, 3));
+  const glm::vec3 wrists = 0.5f * (ContactPoint(r, Limb::kHandLeft) + ContactPoint(r, Limb::kHandRight));
+  auto held = [&](const char* name, double duration) {
+    Move move = OnAllFours(r, name, duration);
+    for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), glm::radians(70.0f));
+    move.kneeling = true;
+    return move;
+  };
+  switch (kneelStage_) {
+    case KneelStage::kNone: {
+      // Down onto the knees, hips over them, hands and toes where they are.
+      Move move = held("kneel", 1.2);
+      const glm::vec3 comGoal = Project(ground_, glm::mix(wrists, toes, 0.45f)) + ground_.normal * (0.3f * standComHeight_);
+      PlanTrunk(move, comGoal, {true, true}, true);
+      kneelStage_ = KneelStage::kKneel;
+      if (getenv("DBG")) {
+        const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, GoalAt(move, 1.0f, BodyReading{}));
+        fprintf(stderr, "kneel plan: knees %.3f %.3f pelvis (%.2f %.2f %.2f) reach %d com %.2f %.2f %.2f goal %.2f %.2f %.2f\n",
+          Height(ground_, pose.worldPositions[rig_.lower[2]]), Height(ground_, pose.worldPositions[rig_.lower[3]]),
+          move.to.pelvis.x, move.to.pelvis.y, move.to.pelvis.z, (int)Reachable(move), PoseCom(pose).x, PoseCom(pose).y, PoseCom(pose).z, comGoal.x, comGoal.y, comGoal.z);
+        for (int i = 0; i < 4; ++i) { glm::vec3 a = pose.worldPositions[rig_.end[i]], t = GoalAt(move, 1.0f, BodyReading{}).limbs[i].target; fprintf(stderr, "  limb %d miss %.3f\n", i, glm::length(a - t)); }
+      }
+      return move;
+    }
+    case KneelStage::kKneel: {
+      // Back over the knees and toes, the arms reaching forward to the hands.
+      Move move = held("sit on heels", 1.2);
+      const glm::vec3 comGoal = Project(ground_, glm::mix(knees, toes, 0.3f)) + ground_.normal * (0.3f * standComHeight_);
+      PlanTrunk(move, comGoal, {true, true}, true);
+      kneelStage_ = KneelStage::kSat;
+      return move;
+    }
+    case KneelStage::kSat: {
+      // The hands walk in, one at a time, to beside the knees.
+      const float ahead[2] = {HandsAhead(r, Limb::kHandLeft), HandsAhead(r, Limb::kHandRight)};
+      const int i = ahead[0] >= ahead[1] ? 0 : 1;
+      if (ahead[i] > kSquatHandsAhead + 0.05f) {
+        const Limb hand = static_cast<Limb>(i);
+        Move move = held("hand step", 0.8);
+        LimbMove& m = move.limbs[i] = HoldLimb(r, hand, false);
+        const glm::vec3 left = glm::normalize(glm::cross(kUp, heading_));
+        const float side = IsLeft(hand) ? 1.0f : -1.0f;
+        const float to = std::max(ahead[i] - kHandStep, kSquatHandsAhead);
+        const float outside = std::fabs(glm::dot(KneePoint(r, 2) - KneePoint(r, 3), left)) * 0.5f + 0.15f;
+        m.toRotation = PlantedHandRotation(hand);
+        m.to = WristAbove(hand, Project(ground_, toes + heading_ * to + left * side * outside), m.toRotation);
+        m.lift = HandSwingLift(hand);
+        m.span = 0.75f;
+        move.landing = i;
+        move.landingAfter = 0.4f;
+        const glm::vec3 comGoal = Project(ground_, glm::mix(knees, toes, 0.3f)) + ground_.normal * (0.3f * standComHeight_);
+        PlanTrunk(move, comGoal, {i != 0, i != 1}, true);
+        stepSpot_[i] = m.to;
+        return move;
+      }
+      // Up onto the toes: the knees leave the ground, the CoM between the toes and the hands.
+      Move move = OnAllFours(r, "knees up", 1.2);
+      for (int k = 2; k < 4; ++k) move.limbs[k] = ToePivot(r, static_cast<Limb>(k), glm::radians(60.0f));
+      const glm::vec3 hands = 0.5f * (ContactPoint(r, Limb::kHandLeft) + ContactPoint(r, Limb::kHandRight));
+      const glm::vec3 comGoal = Project(ground_, glm::mix(toes, hands, 0.3f)) + ground_.normal * (0.4f * standComHeight_);
+      PlanTrunk(move, comGoal, {true, true}, true);
+      kneelStage_ = KneelStage::kUp;
+      feetIn_ = true;
+      return move;
+    }
+    case KneelStage::kUp: break;
+  }
+  RISE_ASSERT_MSG(false, "PlanKneel after the knees are up");
+  return OnAllFours(r, "hold", 0.5);
+}
+
 RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
-  if (FeetRegion(r).SignedDistance(Ground(r.com)) < -kRiseMargin || crawlSteps_ >= kMaxCrawlSteps) return PlanRise(r);
-  const std::vector<Limb> candidates = StepCandidates(r);
+  if (getenv("KNEEL") && kneelStage_ != KneelStage::kUp) {
+    // A hand step left short goes down first, where it was to land.
+    for (int i = 0; i < 2; ++i) {
+      if (kneelStage_ == KneelStage::kSat && Clearance(r, static_cast<Limb>(i)) > kLandedClearance) {
+        Move move = OnAllFours(r, "hand step", 0.6);
+        for (int k = 2; k < 4; ++k) move.limbs[k] = ToePivot(r, static_cast<Limb>(k), glm::radians(70.0f));
+        move.kneeling = true;
+        LimbMove& m = move.limbs[i] = HoldLimb(r, static_cast<Limb>(i), false);
+        glm::vec3 across = stepSpot_[i] ? *stepSpot_[i] - m.from : glm::vec3(0.0f);
+        across -= ground_.normal * glm::dot(across, ground_.normal);
+        m.to = m.from + across - ground_.normal * (Clearance(r, static_cast<Limb>(i)) + kLandingReach);
+        move.landing = i;
+        return move;
+      }
+    }
+    return PlanKneel(r);
+  }
+  static const float pushBack = getenv("PB") ? atof(getenv("PB")) : -1.0f;
+  if (getenv("HOLDV") && FeetRegion(r).SignedDistance(Ground(r.com)) < -kRiseMargin &&
+      glm::length(Horizontal(r.comVelocity)) > static_cast<float>(atof(getenv("HOLDV")))) {
+    // Over the feet but still moving: the hands hold on until the body is still.
+    Move move = OnAllFours(r, "sit back", 0.3);
+    const glm::vec2 middle = FeetRegion(r).Centroid();
+    PlanTrunk(move, Project(ground_, glm::vec3(middle.x, 0.0f, middle.y)) + ground_.normal * Height(ground_, r.com), {true, true}, true);
+    return move;
+  }
+  if (FeetRegion(r).SignedDistance(Ground(r.com)) < -kRiseMargin || crawlSteps_ >= kMaxCrawlSteps ||
+      (move_.name == std::string("sit back") && FeetRegion(r).SignedDistance(Ground(r.com)) < pushBack)) return PlanRise(r);
+  const std::vector<Limb> candidates = getenv("HOLD") ? std::vector<Limb>{} : StepCandidates(r);
+  if (getenv("HOLD")) {
+    Move move = OnAllFours(r, "centre", 0.8);
+    PlanTrunk(move, r.com, {true, true}, true);
+    return move;
+  }
   if (candidates.empty()) {
     // Hands and feet are together: the CoM goes back over the toes, hips low,
     // the hands still touching; the rise lets go of them once it is there.
@@ -923,6 +1105,12 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     const glm::vec3 comGoal = Project(ground_, toes - heading_ * kSitBackBehindToes) + ground_.normal * (0.45f * standComHeight_);
     PlanTrunk(move, comGoal, {true, true}, true);
     ++crawlSteps_;
+    if (getenv("DBG")) {
+      const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, GoalAt(move, 1.0f, BodyReading{}));
+      const glm::vec3 pc = PoseCom(pose);
+      fprintf(stderr, "t=%.2f sit back: goal (%.2f %.2f %.2f) planned (%.2f %.2f %.2f) measured fd %.3f reach %d handsAhead %.2f %.2f heel %.2f\n", r.time, comGoal.x, comGoal.y, comGoal.z, pc.x, pc.y, pc.z,
+        FeetRegion(r).SignedDistance(Ground(r.com)), (int)Reachable(move), HandsAhead(r, Limb::kHandLeft), HandsAhead(r, Limb::kHandRight), glm::degrees(std::acos(glm::dot(move.limbs[2].toRotation * kUp, kUp))));
+    }
     return move;
   }
   // The first candidate the CoM is balanced for steps; else the CoM shifts for
@@ -970,12 +1158,15 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   // A limb left in the air by a short step only goes down where it is.
   const bool putDown = Clearance(r, limb) > kLandedClearance;
   static constexpr std::array<float, 5> kFractions{1.0f, 0.75f, 0.5f, 0.3f, 0.15f};
+  float nominalFootStep = 0.0f;
   for (const float candidate : kFractions) {
     const float fraction = putDown ? 0.0f : candidate;
     Move move = OnAllFours(r, IsArm(limb) ? "hand step" : "foot step", 0.7);
     LimbMove& m = move.limbs[i] = HoldLimb(r, limb, false);
     if (IsArm(limb)) {
-      const float ahead = HandsAhead(r, limb) - fraction * std::min(kHandStep, HandsAhead(r, limb) - kSquatHandsAhead);
+      const float from = HandsAhead(r, limb);
+      const float to = std::max({from - kHandStep, kSquatHandsAhead, HandsAhead(r, OtherHand(limb)) - kHandStagger});
+      const float ahead = from - fraction * std::max(0.0f, from - to);
       const float side = IsLeft(limb) ? 1.0f : -1.0f;
       const glm::vec3 spot = Project(ground_, FeetCentre(r) + heading_ * ahead + left * side * shoulderHalfWidth_ * 0.75f);
       m.toRotation = PlantedHandRotation(limb);
@@ -985,7 +1176,9 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       // Straight down, turned as it is, aiming below the ground: the ground
       // stops it, and the move ends once it touches.
       m.toRotation = m.fromRotation;
-      m.to = m.from - ground_.normal * (Clearance(r, limb) + kLandingReach);
+      glm::vec3 across = stepSpot_[i] ? *stepSpot_[i] - m.from : glm::vec3(0.0f);
+      across -= ground_.normal * glm::dot(across, ground_.normal);
+      m.to = m.from + across - ground_.normal * (Clearance(r, limb) + kLandingReach);
       m.lift = 0.0f;
       move.landing = i;
     } else {
@@ -993,23 +1186,46 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       // Feet come in side by side: a step ends at most kFootLead ahead of the other foot.
       const Limb other = limb == Limb::kFootLeft ? Limb::kFootRight : Limb::kFootLeft;
       const float behindOther = glm::dot(r.jointPositions[rig_.end[static_cast<int>(other)]] - r.jointPositions[rig_.end[i]], heading_);
-      const float length = fraction * std::clamp(std::min(handsAhead - kFootWalkDistance + 0.05f, behindOther + kFootLead), 0.05f, kFootStep);
+      nominalFootStep = std::clamp(std::min(handsAhead - kFootWalkDistance, behindOther + kFootLead), 0.05f, kFootStep);
+      if (getenv("NOHANDS") && handsAhead <= kFootWalkDistance + kMinFootStep) nominalFootStep = std::clamp(behindOther, 0.0f, kFootStep);
+      if (getenv("DBG") && candidate == 1.0f) fprintf(stderr, "  handsAhead %.3f behindOther %.3f\n", handsAhead, behindOther);
+      const float length = fraction * nominalFootStep;
       // From the ankle, not the toe: with no hip twist the foot's yaw follows the
       // leg, so its toe can sit to one side, and stepping from there walked
       // the feet apart.
       m.toRotation = FootRotation(heading_, glm::radians(60.0f));
       const glm::vec3 toe = Project(ground_, r.jointPositions[rig_.end[i]] + m.toRotation * toeLocal_);
-      m.to = AnkleForToe(toe + heading_ * length, m.toRotation);
+      // Back to the stance width either side of the hands' midline: feet that
+      // keep their own line splay apart step by step.
+      const glm::vec3 hands = 0.5f * (ContactPoint(r, Limb::kHandLeft) + ContactPoint(r, Limb::kHandRight));
+      const float side = IsLeft(limb) ? 1.0f : -1.0f;
+      const float halfStance = getenv("HS") ? kCrawlHalfStance : std::max(0.5f * static_cast<float>(spec_.style.stanceWidthM), kCrawlHalfStance);
+      const glm::vec3 across = left * (side * halfStance - glm::dot(toe - hands, left));
+      m.to = AnkleForToe(toe + heading_ * length + across, m.toRotation);
       m.lift = static_cast<float>(spec_.style.stepHeightM);
     }
-    PlanTrunk(move, r.com, {limb != Limb::kHandLeft, limb != Limb::kHandRight});
+    if (!putDown && getenv("SPAN")) {
+      // The swing arrives early and the rest of the move waits for the
+      // servos' lag: the step ends when the limb is down.
+      m.span = static_cast<float>(atof(getenv("SPAN")));
+      move.landing = i;
+      move.landingAfter = 0.5f * m.span;
+    }
+    // A limb being put down aims below the ground, but the trunk is planned
+    // for it touching down there: reaching for the aim pulled the body over.
+    const float aimBelow = putDown && getenv("PDFIX") ? kLandingReach : 0.0f;
+    m.to += ground_.normal * aimBelow;
+    PlanTrunk(move, IsArm(limb) ? r.com : FootLiftCom(r, limb), {limb != Limb::kHandLeft, limb != Limb::kHandRight});
+    move.limbs[i].to -= ground_.normal * aimBelow;
     best = move;
     if (putDown || Reachable(move)) break;
   }
+  if (getenv("DBG")) fprintf(stderr, "t=%.2f step %d putDown=%d from=(%.2f %.2f) to=(%.2f %.2f) d=%.3f\n", r.time, i, putDown, best.limbs[i].from.x, best.limbs[i].from.z, best.limbs[i].to.x, best.limbs[i].to.z, glm::dot(best.limbs[i].to - best.limbs[i].from, heading_));
+  if (!putDown) stepSpot_[i] = best.limbs[i].to;
   // The feet are as far in as this body bent at the hips lets them come: the
   // hands walk from here.
   if (!IsArm(limb) && !putDown) {
-    feetIn_ = glm::dot(best.limbs[i].to - best.limbs[i].from, heading_) < kMinFootStep;
+    feetIn_ = nominalFootStep >= 2.0f * kMinFootStep && glm::dot(best.limbs[i].to - best.limbs[i].from, heading_) < kMinFootStep;
   }
   return best;
 }
@@ -1118,6 +1334,14 @@ glm::vec3 RiseController::ContactPoint(const BodyReading& r, Limb limb) const {
   return Project(ground_, r.jointPositions[end] + rotation * box.center);
 }
 
+glm::vec3 RiseController::KneePoint(const BodyReading& r, int leg) const {
+  return Project(ground_, r.jointPositions[rig_.lower[leg]]);
+}
+
+bool RiseController::KneeDown(const BodyReading& r, int leg) const {
+  return Height(ground_, r.jointPositions[rig_.lower[leg]]) < kneelHeight_ + kLandedClearance;
+}
+
 glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb) const {
   const int end = rig_.end[static_cast<int>(limb)];
   const glm::quat rotation = r.jointRotations[end];
@@ -1140,44 +1364,46 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
   // lying, the trunk rests on the ground and needs no help.
   if (phase_ == RisePhase::kSettle || phase_ == RisePhase::kRoll || phase_ == RisePhase::kPlace || !hasMove_) return;
 
-  // Share the weight among planted, touching supports: the least-norm weights
-  // whose weighted centre is the CoM's ground projection, negatives dropped.
-  std::array<glm::vec3, kLimbCount> point{};
-  std::array<float, kLimbCount> share{};
-  std::vector<int> supports;
+  // Share the weight among planted, touching supports (hands, feet, and knees
+  // resting on the ground): the least-norm weights whose weighted centre is
+  // the CoM's ground projection, negatives dropped.
+  struct Support {
+    int body;         // the skeleton joint whose box the ground pushes
+    glm::vec3 point;  // where
+    float share = 0.0f;
+  };
+  std::vector<Support> supports;
   for (int i = 0; i < kLimbCount; ++i) {
-    if (!planted_[i] || !r.touching[i]) continue;
-    point[i] = SupportPoint(r, static_cast<Limb>(i));
-    supports.push_back(i);
+    if (planted_[i] && r.touching[i]) supports.push_back({rig_.end[i], SupportPoint(r, static_cast<Limb>(i))});
+  }
+  for (int leg = 2; leg < 4; ++leg) {
+    if (move_.kneeling && KneeDown(r, leg)) supports.push_back({rig_.lower[leg], KneePoint(r, leg)});
   }
   if (supports.empty()) return;
   const glm::vec2 c = Ground(r.com);
   for (int pass = 0; pass < 3; ++pass) {
     // Solve A A^T y = b, w = A^T y with A = [1; x; z] over the supports.
     glm::mat3 normal(0.0f);
-    for (int i : supports) {
-      const glm::vec3 a(1.0f, point[i].x, point[i].z);
+    for (const Support& support : supports) {
+      const glm::vec3 a(1.0f, support.point.x, support.point.z);
       normal += glm::outerProduct(a, a);
     }
     const float det = glm::determinant(normal);
-    bool clipped = false;
     if (std::fabs(det) > 1e-8f) {
       const glm::vec3 y = glm::inverse(normal) * glm::vec3(1.0f, c.x, c.y);
-      for (int i : supports) share[i] = glm::dot(y, glm::vec3(1.0f, point[i].x, point[i].z));
+      for (Support& support : supports) support.share = glm::dot(y, glm::vec3(1.0f, support.point.x, support.point.z));
     } else {
-      for (int i : supports) share[i] = 1.0f / static_cast<float>(supports.size());
+      for (Support& support : supports) support.share = 1.0f / static_cast<float>(supports.size());
     }
-    for (size_t k = 0; k < supports.size();) {
-      if (share[supports[k]] < 0.0f) share[supports[k]] = 0.0f, supports.erase(supports.begin() + k), clipped = true;
-      else ++k;
-    }
-    if (!clipped || supports.empty()) break;
+    const size_t before = supports.size();
+    supports.erase(std::remove_if(supports.begin(), supports.end(), [](const Support& support) { return support.share < 0.0f; }),
+                   supports.end());
+    if (supports.size() == before || supports.empty()) break;
   }
   float total = 0.0f;
-  for (int i : supports) total += share[i];
+  for (const Support& support : supports) total += support.share;
   if (total <= 0.0f) return;
   const glm::vec3 gravity(0.0f, -9.81f, 0.0f);
-  std::array<glm::vec3, kLimbCount> force{};
   // On hands and feet, a virtual force on the CoM (Coros et al. 2010) pulls it
   // toward the plan's CoM: a spring-damper shared among the supports like the
   // weight, its ground forces turned into joint torques with the rest.
@@ -1188,7 +1414,7 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
     const float limit = kMaxVirtualForce * totalMass_ * 9.81f;
     if (glm::length(virtualForce) > limit) virtualForce *= limit / glm::length(virtualForce);
   }
-  for (int i : supports) force[i] = (virtualForce - gravity * totalMass_) * (share[i] / total);
+  const glm::vec3 load = virtualForce - gravity * totalMass_;
 
   for (int j = 1; j < sk.JointCount(); ++j) {
     if (!sk.joints[j].hasBox) continue;
@@ -1198,8 +1424,8 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
       if (!sk.joints[s].hasBox) continue;
       const glm::vec3 centre = r.jointPositions[s] + r.jointRotations[s] * sk.joints[s].box.center;
       torque -= glm::cross(centre - pivot, gravity * def_.bones[s].massKg);
-      for (int i = 0; i < kLimbCount; ++i) {
-        if (rig_.end[i] == s && glm::length(force[i]) > 0.0f) torque -= glm::cross(point[i] - pivot, force[i]);
+      for (const Support& support : supports) {
+        if (support.body == s && support.share > 0.0f) torque -= glm::cross(support.point - pivot, load * (support.share / total));
       }
     }
     out[j] = torque;
@@ -1255,7 +1481,14 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
       const float limit = 0.05f;
       if (glm::length(balanceOffset_) > limit) balanceOffset_ *= limit / glm::length(balanceOffset_);
     }
-    if (move_.landing >= 0 && reading.touching[move_.landing] &&
+    // Sitting back ends as soon as the CoM is over the feet and slow: carried on,
+    // it would keep going back past the heels.
+    if (getenv("SBEND") && move_.name == std::string("sit back") &&
+        FeetRegion(reading).SignedDistance(Ground(reading.com)) < -kRiseMargin &&
+        glm::length(Horizontal(reading.comVelocity)) < static_cast<float>(atof(getenv("SBEND")))) {
+      progress_ = 1.0f;
+    }
+    if (move_.landing >= 0 && progress_ > move_.landingAfter && reading.touching[move_.landing] &&
         Clearance(reading, static_cast<Limb>(move_.landing)) < kLandedClearance) {
       progress_ = 1.0f;
     }
@@ -1291,6 +1524,19 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     FeedForward(reading, comGoal, out.feedForward);
     for (int i = 0; i < 2; ++i) {
       if (planted_[i]) out.gainScale[rig_.end[i]] = kPlantedWristGain;
+    }
+    if (getenv("ANK") && OnHandsAndFeet(phase_)) {
+      for (int i = 2; i < 4; ++i) {
+        if (planted_[i]) out.gainScale[rig_.end[i]] = static_cast<float>(atof(getenv("ANK")));
+        if (planted_[i] && getenv("KNEE")) out.gainScale[rig_.lower[i]] = static_cast<float>(atof(getenv("KNEE")));
+      }
+    }
+    if (getenv("DBG2") && move_.name == std::string("foot step")) {
+      for (int i = 2; i < 4; ++i) if (!planted_[i]) {
+        const glm::vec3 a = reading.jointPositions[rig_.end[i]], t = goal.limbs[i].target, pa = reading.jointPositions[rig_.pelvis];
+        const glm::vec3 ps = pose.worldPositions[rig_.end[i]];
+        fprintf(stderr, "t=%.3f s=%.2f leg%d tgt=(%.2f %.2f %.2f) ik=(%.2f %.2f %.2f) act=(%.2f %.2f %.2f) pelvis goal=(%.2f %.2f %.2f) act=(%.2f %.2f %.2f) touch=%d\n", reading.time, progress_, i, t.x,t.y,t.z, ps.x,ps.y,ps.z, a.x,a.y,a.z, goal.pelvisPosition.x, goal.pelvisPosition.y, goal.pelvisPosition.z, pa.x,pa.y,pa.z, (int)reading.touching[i]);
+      }
     }
     trace_.comGoal = PoseCom(goal);
     for (int i = 0; i < kLimbCount; ++i) trace_.limbTargets[i] = goal.limbs[i].target;
