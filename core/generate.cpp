@@ -126,7 +126,7 @@ GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& setting
       phaseStart = time;
     }
     if (settings.keepTrace) result.trace.push_back(controller.LastTrace());
-    if (controller.Finished() || step == maxSteps) break;
+    if (controller.Finished() || controller.GaveUp() || step == maxSteps) break;
 
     for (int j = 1; j < jointCount; ++j) {
       if (!biped.JointOf(j).IsValid()) continue;
@@ -184,6 +184,8 @@ GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& setting
     std::snprintf(outcome, sizeof outcome, "failed: %s", result.health.message.c_str());
   } else if (result.stood) {
     std::snprintf(outcome, sizeof outcome, "stood at %.2f s", result.timeToStand);
+  } else if (controller.GaveUp()) {
+    std::snprintf(outcome, sizeof outcome, "did not stand: fell %d times, at rest at %.2f s", controller.Retries() + 1, end);
   } else {
     std::snprintf(outcome, sizeof outcome, "did not stand within %.1f s (last phase: %s)", spec.maxDurationS,
                   RisePhaseName(controller.Phase()));

@@ -1447,9 +1447,17 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     else if (restSince_ < 0.0) restSince_ = reading.time;
     // A body already balanced on its feet is not lying: it must not sag while it
     // waits for rest, so Phase 2 takes it at once.
-    if ((restSince_ >= 0.0 && reading.time - restSince_ >= kRestHold) || OnItsFeet(reading)) PlanNext(reading);
-  } else if (Fallen(reading) && retries_ < kMaxRetries) {
-    ++retries_;
+    const bool rested = restSince_ >= 0.0 && reading.time - restSince_ >= kRestHold;
+    if (givingUp_) {
+      // Out of retries: the body is let come to rest, and the clip can end there.
+      gaveUp_ = rested;
+    } else if (rested || OnItsFeet(reading)) {
+      PlanNext(reading);
+    }
+  } else if (Fallen(reading)) {
+    // Down again: wait for rest and start over, kMaxRetries times.
+    givingUp_ = retries_ == kMaxRetries;
+    retries_ = std::min(retries_ + 1, kMaxRetries);
     hasMove_ = false;
     phase_ = RisePhase::kSettle;
     restSince_ = -1.0;

@@ -77,6 +77,9 @@ class RiseController {
   const TraceSample& LastTrace() const { return trace_; }
   // How many times a fall sent the plan back to an earlier phase.
   int Retries() const { return retries_; }
+  // True once the body has fallen after its last retry and come to rest: it
+  // will not get up, and the clip can end.
+  bool GaveUp() const { return gaveUp_; }
 
  private:
   struct TrunkPose {
@@ -216,6 +219,7 @@ class RiseController {
   double standTime_ = -1.0;
   bool finished_ = false;
   int retries_ = 0;
+  bool givingUp_ = false, gaveUp_ = false;
   int crawlSteps_ = 0;
   int shiftTries_ = 0;
   bool feetIn_ = false;  // the feet have come in as far as they can

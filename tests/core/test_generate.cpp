@@ -4,6 +4,8 @@
 #include "core/input_json.h"
 #include "test_support.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cstring>
 #include <string>
@@ -90,6 +92,23 @@ TEST_CASE("phase 2: from a deep squat on flat feet the body rises and stands sti
   CHECK(quality.penetrationOk);
   CHECK(quality.slipOk);
   CHECK(quality.jumpOk);
+}
+
+TEST_CASE("a body that keeps falling is let come to rest after its last retry, and the clip ends there") {
+  // Steep, slippery ground: the crawl slides and falls again and again.
+  rise::RiseSpec spec = ProneSpec(60.0);
+  spec.terrain.friction = 0.5;
+  spec.terrain.slopeDeg = 15.0;
+  const rise::GeneratedClip result = rise::GenerateClip(spec);
+  REQUIRE(result.health.ok);
+  CHECK_FALSE(result.stood);
+  CHECK(result.retries == 4);
+  CHECK(result.clip.Duration() < 50.0);
+  CHECK(result.outcome.find("fell 5 times") != std::string::npos);
+  CHECK(result.clip.metadata.phases.back().name == "settle");
+  // At rest: the last two frames hold the same pose.
+  const size_t last = static_cast<size_t>(result.clip.FrameCount() - 1);
+  CHECK(glm::length(result.clip.rootTranslation[last] - result.clip.rootTranslation[last - 1]) < 1e-3f);
 }
 
 TEST_CASE("metadata: phases tile the clip, contacts name effectors, peak torques stay under the caps") {
