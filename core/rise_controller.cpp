@@ -873,6 +873,15 @@ std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
   if (getenv("NOHANDS") && (0.5f * (left + right) <= kFootWalkDistance + kMinFootStep || feetIn_)) {
     // In: the rear foot comes up beside the other before the CoM goes back over them.
     if (std::fabs(stagger) > kMinFootStep) return {stagger < 0.0f ? Limb::kFootLeft : Limb::kFootRight};
+    if (getenv("ALIGNLAT")) {
+      const glm::vec3 side = glm::normalize(glm::cross(kUp, heading_));
+      const glm::vec3 hands = 0.5f * (ContactPoint(r, Limb::kHandLeft) + ContactPoint(r, Limb::kHandRight));
+      const float halfStance = getenv("HS") ? kCrawlHalfStance : std::max(0.5f * static_cast<float>(spec_.style.stanceWidthM), kCrawlHalfStance);
+      for (const Limb foot : {Limb::kFootLeft, Limb::kFootRight}) {
+        const float want = IsLeft(foot) ? halfStance : -halfStance;
+        if (std::fabs(glm::dot(ContactPoint(r, foot) - hands, side) - want) > static_cast<float>(atof(getenv("ALIGNLAT")))) return {foot};
+      }
+    }
     return {};
   }
   if (0.5f * (left + right) <= kFootWalkDistance || feetIn_) return hands;
@@ -1100,7 +1109,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   if (candidates.empty()) {
     // Hands and feet are together: the CoM goes back over the toes, hips low,
     // the hands still touching; the rise lets go of them once it is there.
-    Move move = OnAllFours(r, "sit back", 1.2);
+    Move move = OnAllFours(r, "sit back", getenv("SBD") ? atof(getenv("SBD")) : 1.2);
     const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
     const glm::vec3 comGoal = Project(ground_, toes - heading_ * kSitBackBehindToes) + ground_.normal * (0.45f * standComHeight_);
     PlanTrunk(move, comGoal, {true, true}, true);
