@@ -49,6 +49,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/matrix.hpp>
 
+#include <algorithm>
 #include <numeric>
 
 namespace rise::physics {
@@ -137,39 +138,38 @@ void BuildJointTree(JointTree& tree, std::vector<Joint>& joints, int bodyCount, 
     if (!visited[body] && !adjacent[body].empty()) visit(body);
   }
 
-  tree.bodySlot.assign(size_t(bodyCount), -1);
-  std::vector<bool> inTree(size_t(bodyCount), false);
+  // Every parent body gets a slot, in link order.
+  std::vector<int32_t> bodySlot(size_t(bodyCount), -1);
   for (const JointTreeLink& link : tree.links) {
-    inTree[link.child] = true;
-    if (link.parent < 0) continue;
-    inTree[link.parent] = true;
-    if (tree.bodySlot[link.parent] < 0) {
-      tree.bodySlot[link.parent] = int32_t(tree.inverses.size());
-      tree.inverses.emplace_back();
-    }
+    if (link.parent < 0 || bodySlot[link.parent] >= 0) continue;
+    bodySlot[link.parent] = int32_t(tree.slotBodies.size());
+    tree.slotBodies.push_back(link.parent);
   }
-  for (JointTreeLink& link : tree.links) link.childSlot = tree.bodySlot[link.child];
   std::vector<bool> isChild(size_t(bodyCount), false);
-  for (const JointTreeLink& link : tree.links) isChild[link.child] = true;
-  for (int32_t body = 0; body < bodyCount; ++body) {
-    if (inTree[body]) tree.treeBodies.push_back(body);
-    if (inTree[body] && !isChild[body] && tree.bodySlot[body] >= 0) tree.rootBodies.push_back(body);
+  for (JointTreeLink& link : tree.links) {
+    link.childSlot = bodySlot[link.child];
+    link.parentSlot = link.parent >= 0 ? bodySlot[link.parent] : -1;
+    isChild[link.child] = true;
   }
-  tree.scratchA.resize(tree.inverses.size());
-  tree.scratchB.resize(tree.inverses.size());
-  tree.scratchC.resize(tree.inverses.size());
-  tree.deltaV.assign(size_t(bodyCount), glm::vec3(0.0f));
-  tree.deltaW.assign(size_t(bodyCount), glm::vec3(0.0f));
+  const size_t slotCount = tree.slotBodies.size();
+  for (size_t slot = 0; slot < slotCount; ++slot) {
+    if (!isChild[tree.slotBodies[slot]]) tree.rootSlots.push_back(int32_t(slot));
+  }
+  tree.inverses.resize(slotCount);
+  tree.scratchA.resize(slotCount);
+  tree.scratchB.resize(slotCount);
+  tree.scratchC.resize(slotCount);
+  tree.deltaV.resize(slotCount);
+  tree.deltaW.resize(slotCount);
 }
 
 void FactorJointTree(JointTree& tree, const std::vector<Joint>& joints, const std::vector<Body>& bodies) {
   // D of every body with links below it starts as its own mass.
-  for (int32_t body : tree.treeBodies) {
-    const int32_t slot = tree.bodySlot[body];
-    if (slot < 0) continue;
-    tree.scratchA[slot] = glm::mat3(bodies[body].mass);
+  for (size_t slot = 0; slot < tree.slotBodies.size(); ++slot) {
+    const Body& body = bodies[tree.slotBodies[slot]];
+    tree.scratchA[slot] = glm::mat3(body.mass);
     tree.scratchB[slot] = glm::mat3(0.0f);
-    tree.scratchC[slot] = WorldInertia(bodies[body]);
+    tree.scratchC[slot] = WorldInertia(body);
   }
 
   auto invert = [&tree](int32_t slot) {
@@ -188,26 +188,28 @@ void FactorJointTree(JointTree& tree, const std::vector<Joint>& joints, const st
     JointTreeLink& link = *it;
     const Joint& joint = joints[link.joint];
     const Body& child = bodies[link.child];
-    const glm::vec3& r = link.sign > 0.0f ? joint.leverB : joint.leverA;
+    link.childLever = link.sign > 0.0f ? joint.leverB : joint.leverA;
+    link.parentLever = link.sign > 0.0f ? joint.leverA : joint.leverB;
+    const glm::vec3& r = link.childLever;
+    glm::mat3 lowerLinear(child.invMass);
     if (link.childSlot < 0) {
-      link.lowerLinear = glm::mat3(child.invMass);
       link.lowerAngular = TimesSkew(child.invInertiaWorld, r);
     } else {
       invert(link.childSlot);  // every link below the child came earlier in this loop
       const JointTreeInverse& inverse = tree.inverses[link.childSlot];
-      link.lowerLinear = inverse.linear + TimesSkew(inverse.coupling, r);
+      lowerLinear = inverse.linear + TimesSkew(inverse.coupling, r);
+      link.lowerLinear = lowerLinear;
       link.lowerAngular = glm::transpose(inverse.coupling) + TimesSkew(inverse.angular, r);
     }
-    link.invMass = glm::inverse(link.lowerLinear - SkewTimes(r, link.lowerAngular));
-    if (link.parent < 0) continue;
-    const int32_t parentSlot = tree.bodySlot[link.parent];
-    const glm::vec3& rp = link.sign > 0.0f ? joint.leverA : joint.leverB;
+    link.invMass = glm::inverse(lowerLinear - SkewTimes(r, link.lowerAngular));
+    if (link.parentSlot < 0) continue;
+    const glm::vec3& rp = link.parentLever;
     const glm::mat3 sr = TimesSkew(link.invMass, rp);
-    tree.scratchA[parentSlot] += link.invMass;
-    tree.scratchB[parentSlot] -= sr;
-    tree.scratchC[parentSlot] -= SkewTimes(rp, sr);
+    tree.scratchA[link.parentSlot] += link.invMass;
+    tree.scratchB[link.parentSlot] -= sr;
+    tree.scratchC[link.parentSlot] -= SkewTimes(rp, sr);
   }
-  for (int32_t body : tree.rootBodies) invert(tree.bodySlot[body]);
+  for (int32_t slot : tree.rootSlots) invert(slot);
   tree.factorCurrent = true;
 }
 
@@ -215,67 +217,66 @@ void SolveJointTree(JointTree& tree, std::vector<Joint>& joints, std::vector<Bod
                     float biasRate) {
   RISE_ASSERT_MSG(tree.factorCurrent, "the joint forest must be factorised before it is solved");
   // Forward substitution, leaf to root; the right-hand side is each joint's velocity error. Only
-  // bodies with links below them gather terms; a leaf child's are zero and skipped.
-  for (int32_t body : tree.treeBodies) {
-    if (tree.bodySlot[body] < 0) continue;
-    tree.deltaV[body] = glm::vec3(0.0f);
-    tree.deltaW[body] = glm::vec3(0.0f);
-  }
+  // bodies with links below them (slots) gather terms; a leaf child's are zero.
+  std::fill(tree.deltaV.begin(), tree.deltaV.end(), glm::vec3(0.0f));
+  std::fill(tree.deltaW.begin(), tree.deltaW.end(), glm::vec3(0.0f));
   for (auto it = tree.links.rbegin(); it != tree.links.rend(); ++it) {
     JointTreeLink& link = *it;
-    const Joint& joint = joints[link.joint];
-    const Body& a = joint.bodyA >= 0 ? bodies[joint.bodyA] : staticBody;
-    const Body& b = bodies[joint.bodyB];
-    // B's anchor velocity minus A's, and their separation, turned to child minus parent.
-    glm::vec3 error = PointVelocity(b, joint.leverB) - PointVelocity(a, joint.leverA);
+    const Body& child = bodies[link.child];
+    const Body& parent = link.parent >= 0 ? bodies[link.parent] : staticBody;
+    const glm::vec3& rc = link.childLever;
+    const glm::vec3& rp = link.parentLever;
+    // The child's anchor velocity minus the parent's, plus the bias on their separation.
+    glm::vec3 error = PointVelocity(child, rc) - PointVelocity(parent, rp);
     if (biasRate > 0.0f) {
-      error += biasRate * ((b.transform.position + joint.leverB) - (a.transform.position + joint.leverA));
+      error += biasRate * ((child.transform.position + rc) - (parent.transform.position + rp));
     }
-    link.x = -link.sign * error;
+    link.x = -error;
     if (link.childSlot >= 0) {
-      link.x -= tree.deltaV[link.child] * link.lowerLinear + tree.deltaW[link.child] * link.lowerAngular;
+      link.x -= tree.deltaV[link.childSlot] * link.lowerLinear + tree.deltaW[link.childSlot] * link.lowerAngular;
     }
-    if (link.parent < 0) continue;
+    if (link.parentSlot < 0) continue;
     const glm::vec3 s = link.invMass * link.x;
-    tree.deltaV[link.parent] -= s;
-    tree.deltaW[link.parent] -= glm::cross(link.sign > 0.0f ? joint.leverA : joint.leverB, s);
+    tree.deltaV[link.parentSlot] -= s;
+    tree.deltaW[link.parentSlot] -= glm::cross(rp, s);
   }
 
   // Diagonal and backward substitution, root to leaf. A body's velocity change is final once
   // its own row is done, so it is applied there.
-  auto applyInverse = [&tree](int32_t body) {
-    const JointTreeInverse& inverse = tree.inverses[tree.bodySlot[body]];
-    const glm::vec3 v = tree.deltaV[body];
-    const glm::vec3 w = tree.deltaW[body];
-    tree.deltaV[body] = inverse.linear * v + inverse.coupling * w;
-    tree.deltaW[body] = v * inverse.coupling + inverse.angular * w;
+  auto applyInverse = [&tree](int32_t slot) {
+    const JointTreeInverse& inverse = tree.inverses[slot];
+    const glm::vec3 v = tree.deltaV[slot];
+    const glm::vec3 w = tree.deltaW[slot];
+    tree.deltaV[slot] = inverse.linear * v + inverse.coupling * w;
+    tree.deltaW[slot] = v * inverse.coupling + inverse.angular * w;
   };
-  auto applyDelta = [&tree, &bodies](int32_t body) {
-    bodies[body].linearVelocity += tree.deltaV[body];
-    bodies[body].angularVelocity += tree.deltaW[body];
+  auto applyDelta = [&tree, &bodies](int32_t slot) {
+    Body& body = bodies[tree.slotBodies[slot]];
+    body.linearVelocity += tree.deltaV[slot];
+    body.angularVelocity += tree.deltaW[slot];
   };
-  for (int32_t body : tree.rootBodies) {
-    applyInverse(body);
-    applyDelta(body);
+  for (int32_t slot : tree.rootSlots) {
+    applyInverse(slot);
+    applyDelta(slot);
   }
   for (JointTreeLink& link : tree.links) {
-    Joint& joint = joints[link.joint];
     glm::vec3 y = link.x;
-    if (link.parent >= 0) {
-      const glm::vec3& rp = link.sign > 0.0f ? joint.leverA : joint.leverB;
-      y += tree.deltaV[link.parent] - glm::cross(rp, tree.deltaW[link.parent]);
+    if (link.parentSlot >= 0) {
+      y += tree.deltaV[link.parentSlot] - glm::cross(link.parentLever, tree.deltaW[link.parentSlot]);
     }
     const glm::vec3 x = -(link.invMass * y);
-    joint.linearImpulse -= link.sign * x;  // lambda = -x acts on the child; the joint's on B
+    joints[link.joint].linearImpulse -= link.sign * x;  // lambda = -x acts on the child; the joint's on B
     if (link.childSlot >= 0) {
-      applyInverse(link.child);
-      tree.deltaV[link.child] -= link.lowerLinear * x;
-      tree.deltaW[link.child] -= link.lowerAngular * x;
+      applyInverse(link.childSlot);
+      tree.deltaV[link.childSlot] -= link.lowerLinear * x;
+      tree.deltaW[link.childSlot] -= link.lowerAngular * x;
+      applyDelta(link.childSlot);
     } else {
-      tree.deltaV[link.child] = -bodies[link.child].invMass * x;
-      tree.deltaW[link.child] = -(link.lowerAngular * x);
+      // A leaf child: its velocity change is its own response to the joint impulse.
+      Body& child = bodies[link.child];
+      child.linearVelocity -= child.invMass * x;
+      child.angularVelocity -= link.lowerAngular * x;
     }
-    applyDelta(link.child);
   }
 }
 
