@@ -172,7 +172,8 @@ void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bo
   if (!joint.pointInTree) {
     SolvePointPart(a, b, joint.leverA, joint.leverB, joint.pointMass, joint.linearImpulse, context, useBias);
   }
-  joint.angularImpulse = AngularImpulse(joint, rows);
 }
+
+void StoreJointWarmStart(Joint& joint) { joint.angularImpulse = AngularImpulse(joint, joint.rows); }
 
 }  // namespace rise::physics

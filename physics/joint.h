@@ -142,6 +142,9 @@ void PrepareJoint(Joint& joint, const Body& a, const Body& b, const SolverContex
 void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b, const SolverContext& context);
 void WarmStartJoint(Joint& joint, Body& a, Body& b);
 void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bool useBias);
+// Sums the angular rows' impulses at the present rows into angularImpulse, which the next warm
+// start applies. Only its value after a sub-step's last pass is read, so the solver calls it there.
+void StoreJointWarmStart(Joint& joint);
 
 // Per-type geometry (joint_ball.cpp, joint_hinge.cpp, joint_universal.cpp).
 AngularRows BallRows(const Joint& joint, const Body& a, const Body& b);

@@ -98,6 +98,10 @@ void IntegratePositions(WorldState& state, const SolverContext& context) {
   if (state.jointTree.active) FactorJointTree(state.jointTree, state.joints, state.bodies);
 }
 
+void StoreJointWarmStarts(WorldState& state) {
+  for (Joint& joint : state.joints) StoreJointWarmStart(joint);
+}
+
 bool IsFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Impulses already live in the contacts and joints for the next warm start; what is left is to
@@ -137,9 +141,13 @@ StepStatus Step(WorldState& state) {
   for (int substep = 0; substep < state.settings.substepCount; ++substep) {
     IntegrateVelocities(state, context.h);
     if (context.warmStart) WarmStart(state);
-    for (int i = 0; i < state.settings.solveIterations; ++i) Solve(state, context, true);
+    const int solves = state.settings.solveIterations;
+    const int relaxes = state.settings.relaxIterations;
+    for (int i = 0; i < solves; ++i) Solve(state, context, true);
+    if (solves > 0 && relaxes == 0) StoreJointWarmStarts(state);
     IntegratePositions(state, context);
-    for (int i = 0; i < state.settings.relaxIterations; ++i) Solve(state, context, false);
+    for (int i = 0; i < relaxes; ++i) Solve(state, context, false);
+    if (relaxes > 0) StoreJointWarmStarts(state);
   }
 
   state.status = StoreImpulses(state);
