@@ -37,9 +37,10 @@
 // sub-step (WorldSettings::jointTreeErrorReduction), and the relax pass takes its velocity out.
 //
 // Everything else stays sequential impulses: the joints' angular rows (hinge and universal axis
-// locks, limits, PD motors) and the contacts. Every pass solves those first and this last
+// locks, limits, PD motors) and the contacts. A pass solves those first and this last
 // (solver.cpp), a block Gauss-Seidel between an inexact and an exact block, so the anchors have
 // the last word: with contacts last instead, the drop's joints opened to 8 mm at 2 sub-steps.
+// Of three or more biased passes per sub-step only the first and the last end with this solve.
 #include "physics/joint_tree.h"
 
 #include "base/assert.h"

@@ -74,14 +74,15 @@ void WarmStart(WorldState& state) {
   WarmStartContacts(state.contacts, state.bodies, state.staticBody);
 }
 
-void Solve(WorldState& state, const SolverContext& context, bool useBias) {
+// exactJoints: whether this pass ends with the joint forest's exact solve (kDirectTree only).
+void Solve(WorldState& state, const SolverContext& context, bool useBias, bool exactJoints) {
   for (Joint& joint : state.joints) {
     SolveJoint(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB], context, useBias);
   }
   SolveContacts(state.contacts, state.bodies, state.staticBody, context, useBias);
   // Last, so the joints' anchors have the final word in every pass: contacts forgive a little
   // overlap (soft, and the next pass corrects it) where an open joint would show on screen.
-  if (state.jointTree.active) {
+  if (state.jointTree.active && exactJoints) {
     SolveJointTree(state.jointTree, state.joints, state.bodies, state.staticBody,
                    useBias ? state.settings.jointTreeErrorReduction * context.invH : 0.0f);
   }
@@ -143,10 +144,15 @@ StepStatus Step(WorldState& state) {
     if (context.warmStart) WarmStart(state);
     const int solves = state.settings.solveIterations;
     const int relaxes = state.settings.relaxIterations;
-    for (int i = 0; i < solves; ++i) Solve(state, context, true);
+    // The exact solve in the first biased pass spreads the joint impulses before the contacts
+    // and limits converge, and in the last it gives the anchors the final word; in the passes
+    // between, the rows after it undo most of what it did. Leaving it out of the middle pass of
+    // 1 sub-step x 3 solves changed the ragdoll drop's peak penetration and joint separation by
+    // 0.01 mm and saved 5 % of the step.
+    for (int i = 0; i < solves; ++i) Solve(state, context, true, i == 0 || i == solves - 1);
     if (solves > 0 && relaxes == 0) StoreJointWarmStarts(state);
     IntegratePositions(state, context);
-    for (int i = 0; i < relaxes; ++i) Solve(state, context, false);
+    for (int i = 0; i < relaxes; ++i) Solve(state, context, false, true);
     if (relaxes > 0) StoreJointWarmStarts(state);
   }
 
