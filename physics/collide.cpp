@@ -297,13 +297,22 @@ Manifold CollidePlaneBox(const PlaneShape& plane, const OrientedBox& b, float sp
   Manifold manifold;
   manifold.normal = plane.normal;
 
-  // Vertex v is center +- halfAxis[0] +- halfAxis[1] +- halfAxis[2], bit k of v choosing the sign.
+  // Vertex v is ((center +- halfAxis[0]) +- halfAxis[1]) +- halfAxis[2], bit k of v choosing the
+  // sign; the vertices share their partial sums.
   const glm::vec3 halfAxis[3] = {b.axes[0] * b.half[0], b.axes[1] * b.half[1], b.axes[2] * b.half[2]};
+  glm::vec3 vertices[8];
+  for (int x = 0; x < 2; ++x) {
+    const glm::vec3 px = x ? b.center + halfAxis[0] : b.center - halfAxis[0];
+    for (int y = 0; y < 2; ++y) {
+      const glm::vec3 pxy = y ? px + halfAxis[1] : px - halfAxis[1];
+      vertices[x | y << 1] = pxy - halfAxis[2];
+      vertices[x | y << 1 | 4] = pxy + halfAxis[2];
+    }
+  }
   Candidate candidates[8];
   int count = 0;
   for (int v = 0; v < 8; ++v) {
-    glm::vec3 p = b.center;
-    for (int k = 0; k < 3; ++k) p += (v >> k & 1) ? halfAxis[k] : -halfAxis[k];
+    const glm::vec3& p = vertices[v];
     const float separation = glm::dot(plane.normal, p) - plane.offset;
     if (separation < speculativeDistance) {
       candidates[count++] = {p - plane.normal * (0.5f * separation), separation, static_cast<uint32_t>(v)};
