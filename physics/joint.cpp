@@ -141,10 +141,7 @@ void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b, const Solve
   UpdateMotorRows(joint, a, b, context);
 }
 
-void WarmStartJoint(Joint& joint, Body& a, Body& b) {
-  ApplyAngularImpulse(a, b, joint.angularImpulse);
-  ApplyLinearImpulse(a, b, joint.leverA, joint.leverB, joint.linearImpulse);
-}
+namespace {
 
 void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bool useBias) {
   const AngularRows& rows = joint.rows;
@@ -158,10 +155,8 @@ void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bo
   }
 
   for (int i = 0; i < rows.limitCount; ++i) {
-    SolveAngularLimit(a, b, rows.limitAxis[i], rows.limitMass[i], rows.angle[i] - rows.range[i].lower,
-                      joint.lowerImpulse[i], context, useBias);
-    SolveAngularLimit(a, b, -rows.limitAxis[i], rows.limitMass[i], rows.range[i].upper - rows.angle[i],
-                      joint.upperImpulse[i], context, useBias);
+    SolveAngularRange(a, b, rows.limitAxis[i], rows.limitMass[i], rows.angle[i], rows.range[i].lower,
+                      rows.range[i].upper, joint.lowerImpulse[i], joint.upperImpulse[i], context, useBias);
   }
 
   for (int i = 0; i < rows.lockCount; ++i) {
@@ -174,6 +169,26 @@ void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bo
   }
 }
 
-void StoreJointWarmStart(Joint& joint) { joint.angularImpulse = AngularImpulse(joint, joint.rows); }
+}  // namespace
+
+void WarmStartJoints(std::vector<Joint>& joints, std::vector<Body>& bodies, Body& staticBody) {
+  for (Joint& joint : joints) {
+    Body& a = joint.bodyA >= 0 ? bodies[joint.bodyA] : staticBody;
+    Body& b = bodies[joint.bodyB];
+    ApplyAngularImpulse(a, b, joint.angularImpulse);
+    ApplyLinearImpulse(a, b, joint.leverA, joint.leverB, joint.linearImpulse);
+  }
+}
+
+void SolveJoints(std::vector<Joint>& joints, std::vector<Body>& bodies, Body& staticBody, const SolverContext& context,
+                 bool useBias) {
+  for (Joint& joint : joints) {
+    SolveJoint(joint, joint.bodyA >= 0 ? bodies[joint.bodyA] : staticBody, bodies[joint.bodyB], context, useBias);
+  }
+}
+
+void StoreJointWarmStarts(std::vector<Joint>& joints) {
+  for (Joint& joint : joints) joint.angularImpulse = AngularImpulse(joint, joint.rows);
+}
 
 }  // namespace rise::physics
