@@ -66,10 +66,10 @@ int32_t FindRoot(std::vector<int32_t>& parent, int32_t i) {
 }
 
 // m [r]x and [r]x m without the multiplications by the zeros of the cross-product matrix.
-glm::mat3 TimesSkew(const glm::mat3& m, const glm::vec3& r) {
+inline glm::mat3 TimesSkew(const glm::mat3& m, const glm::vec3& r) {
   return glm::mat3(r.z * m[1] - r.y * m[2], r.x * m[2] - r.z * m[0], r.y * m[0] - r.x * m[1]);
 }
-glm::mat3 SkewTimes(const glm::vec3& r, const glm::mat3& m) {
+inline glm::mat3 SkewTimes(const glm::vec3& r, const glm::mat3& m) {
   return glm::mat3(glm::cross(r, m[0]), glm::cross(r, m[1]), glm::cross(r, m[2]));
 }
 
