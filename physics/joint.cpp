@@ -23,17 +23,19 @@ namespace rise::physics {
 
 namespace {
 
-AngularRows RowsFor(const Joint& joint, const Body& a, const Body& b) {
+void UpdateRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows) {
   switch (joint.type) {
     case JointType::kBall:
-      return BallRows(joint, a, b);
+      BallRows(joint, a, b, rows);
+      return;
     case JointType::kHinge:
-      return HingeRows(joint, a, b);
+      HingeRows(joint, a, b, rows);
+      return;
     case JointType::kUniversal:
-      return UniversalRows(joint, a, b);
+      UniversalRows(joint, a, b, rows);
+      return;
   }
   RISE_ASSERT_MSG(false, "unknown joint type");
-  return {};
 }
 
 // Rotation vector (axis * angle, shortest way round) of a unit quaternion.
@@ -61,7 +63,7 @@ glm::vec3 AngularImpulse(const Joint& joint, const AngularRows& rows) {
 // The pose-only part of UpdateJointGeometry: rows, their effective masses and the lever arms.
 void UpdateJointRows(Joint& joint, const Body& a, const Body& b) {
   AngularRows& rows = joint.rows;
-  rows = RowsFor(joint, a, b);
+  UpdateRows(joint, a, b, rows);
   const glm::mat3 invInertiaSum = a.invInertiaWorld + b.invInertiaWorld;
   for (int i = 0; i < rows.lockCount; ++i) rows.lockMass[i] = AngularEffectiveMass(invInertiaSum, rows.lockAxis[i]);
   for (int i = 0; i < rows.limitCount; ++i) rows.limitMass[i] = AngularEffectiveMass(invInertiaSum, rows.limitAxis[i]);

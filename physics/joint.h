@@ -150,9 +150,10 @@ void SolveJoints(std::vector<Joint>& joints, std::vector<Body>& bodies, Body& st
 // start applies. Only its value after a sub-step's last pass is read, so the solver calls it there.
 void StoreJointWarmStarts(std::vector<Joint>& joints);
 
-// Per-type geometry (joint_ball.cpp, joint_hinge.cpp, joint_universal.cpp).
-AngularRows BallRows(const Joint& joint, const Body& a, const Body& b);
-AngularRows HingeRows(const Joint& joint, const Body& a, const Body& b);
-AngularRows UniversalRows(const Joint& joint, const Body& a, const Body& b);
+// Per-type geometry (joint_ball.cpp, joint_hinge.cpp, joint_universal.cpp), written into `rows`
+// in place: counts, axes, positions, angles and ranges (the effective masses are the caller's).
+void BallRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows);
+void HingeRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows);
+void UniversalRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows);
 
 }  // namespace rise::physics
