@@ -173,16 +173,13 @@ void FactorJointTree(JointTree& tree, const std::vector<Joint>& joints, const st
     tree.scratchC[slot] = WorldInertia(body);
   }
 
+  // Schur complement of the linear block; the explicit blocks of D^-1 are never formed, as every
+  // use of D^-1 multiplies it by something narrower.
   auto invert = [&tree](int32_t slot) {
-    // Schur complement of the linear block: D^-1 = [[A^-1 + X T X^T, -X T], [-T X^T, T]] with
-    // X = A^-1 B and T = (C - B^T X)^-1.
-    const glm::mat3 aInverse = glm::inverse(tree.scratchA[slot]);
-    const glm::mat3 x = aInverse * tree.scratchB[slot];
-    const glm::mat3 t = glm::inverse(tree.scratchC[slot] - glm::transpose(tree.scratchB[slot]) * x);
     JointTreeInverse& inverse = tree.inverses[slot];
-    inverse.coupling = -(x * t);
-    inverse.linear = aInverse - inverse.coupling * glm::transpose(x);
-    inverse.angular = t;
+    inverse.linearInverse = glm::inverse(tree.scratchA[slot]);
+    inverse.coupling = inverse.linearInverse * tree.scratchB[slot];
+    inverse.schurInverse = glm::inverse(tree.scratchC[slot] - glm::transpose(tree.scratchB[slot]) * inverse.coupling);
   };
 
   for (auto it = tree.links.rbegin(); it != tree.links.rend(); ++it) {
@@ -197,10 +194,11 @@ void FactorJointTree(JointTree& tree, const std::vector<Joint>& joints, const st
       link.lowerAngular = TimesSkew(child.invInertiaWorld, r);
     } else {
       invert(link.childSlot);  // every link below the child came earlier in this loop
+      // L = D^-1 G^T with G^T = [1; [r]x]: angular rows T ([r]x - X^T), linear rows A^-1 - X (those).
       const JointTreeInverse& inverse = tree.inverses[link.childSlot];
-      lowerLinear = inverse.linear + TimesSkew(inverse.coupling, r);
+      link.lowerAngular = inverse.schurInverse * (SkewMatrix(r) - glm::transpose(inverse.coupling));
+      lowerLinear = inverse.linearInverse - inverse.coupling * link.lowerAngular;
       link.lowerLinear = lowerLinear;
-      link.lowerAngular = glm::transpose(inverse.coupling) + TimesSkew(inverse.angular, r);
     }
     link.invMass = glm::inverse(lowerLinear - SkewTimes(r, link.lowerAngular));
     if (link.parentSlot < 0) continue;
@@ -247,9 +245,9 @@ void SolveJointTree(JointTree& tree, std::vector<Joint>& joints, std::vector<Bod
   auto applyInverse = [&tree](int32_t slot) {
     const JointTreeInverse& inverse = tree.inverses[slot];
     const glm::vec3 v = tree.deltaV[slot];
-    const glm::vec3 w = tree.deltaW[slot];
-    tree.deltaV[slot] = inverse.linear * v + inverse.coupling * w;
-    tree.deltaW[slot] = v * inverse.coupling + inverse.angular * w;
+    const glm::vec3 w = inverse.schurInverse * (tree.deltaW[slot] - v * inverse.coupling);
+    tree.deltaV[slot] = inverse.linearInverse * v - inverse.coupling * w;
+    tree.deltaW[slot] = w;
   };
   auto applyDelta = [&tree, &bodies](int32_t slot) {
     Body& body = bodies[tree.slotBodies[slot]];

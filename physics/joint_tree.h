@@ -36,10 +36,13 @@ struct JointTreeLink {
   glm::vec3 x{0.0f};        // scratch of the solve
 };
 
-// D^-1 of a body that has links below it: its mass plus the subtree hanging from it, as 6x6
-// blocks [[linear, coupling], [coupling^T, angular]] acting on (v, w).
+// D^-1 of a body that has links below it, kept factorised. D = [[A, B], [B^T, C]] is its mass
+// plus the subtree hanging from it, acting on (v, w); with X = A^-1 B and T = (C - B^T X)^-1,
+// D^-1 (v, w) = (A^-1 v - X w', w') where w' = T (w - X^T v).
 struct JointTreeInverse {
-  glm::mat3 linear{0.0f}, coupling{0.0f}, angular{0.0f};
+  glm::mat3 linearInverse{0.0f};  // A^-1
+  glm::mat3 coupling{0.0f};       // X
+  glm::mat3 schurInverse{0.0f};   // T
 };
 
 // Bodies with links below them are numbered by "slot"; everything per body that the factorisation
