@@ -215,8 +215,19 @@ void FactorJointTree(JointTree& tree, const std::vector<Joint>& joints, const st
 void SolveJointTree(JointTree& tree, std::vector<Joint>& joints, std::vector<Body>& bodies, const Body& staticBody,
                     float biasRate) {
   RISE_ASSERT_MSG(tree.factorCurrent, "the joint forest must be factorised before it is solved");
+  // x_i = D_i^-1 x_i of a body with links below it (a slot), applied once its own row is complete.
+  auto applyInverse = [&tree](int32_t slot) {
+    const JointTreeInverse& inverse = tree.inverses[slot];
+    const glm::vec3 v = tree.deltaV[slot];
+    const glm::vec3 w = inverse.schurInverse * (tree.deltaW[slot] - v * inverse.coupling);
+    tree.deltaV[slot] = inverse.linearInverse * v - inverse.coupling * w;
+    tree.deltaW[slot] = w;
+  };
+
   // Forward substitution, leaf to root; the right-hand side is each joint's velocity error. Only
-  // bodies with links below them (slots) gather terms; a leaf child's are zero.
+  // bodies with links below them (slots) gather terms; a leaf child's are zero. A child's row is
+  // complete when its link comes up, so its diagonal solve happens here rather than in the
+  // backward pass: then L^T x_c = G_c D_c^-1 x_c costs a cross product, not two 3x3 products.
   std::fill(tree.deltaV.begin(), tree.deltaV.end(), glm::vec3(0.0f));
   std::fill(tree.deltaW.begin(), tree.deltaW.end(), glm::vec3(0.0f));
   for (auto it = tree.links.rbegin(); it != tree.links.rend(); ++it) {
@@ -232,7 +243,8 @@ void SolveJointTree(JointTree& tree, std::vector<Joint>& joints, std::vector<Bod
     }
     link.x = -error;
     if (link.childSlot >= 0) {
-      link.x -= tree.deltaV[link.childSlot] * link.lowerLinear + tree.deltaW[link.childSlot] * link.lowerAngular;
+      applyInverse(link.childSlot);
+      link.x -= tree.deltaV[link.childSlot] - glm::cross(rc, tree.deltaW[link.childSlot]);
     }
     if (link.parentSlot < 0) continue;
     const glm::vec3 s = link.invMass * link.x;
@@ -240,15 +252,8 @@ void SolveJointTree(JointTree& tree, std::vector<Joint>& joints, std::vector<Bod
     tree.deltaW[link.parentSlot] -= glm::cross(rp, s);
   }
 
-  // Diagonal and backward substitution, root to leaf. A body's velocity change is final once
-  // its own row is done, so it is applied there.
-  auto applyInverse = [&tree](int32_t slot) {
-    const JointTreeInverse& inverse = tree.inverses[slot];
-    const glm::vec3 v = tree.deltaV[slot];
-    const glm::vec3 w = inverse.schurInverse * (tree.deltaW[slot] - v * inverse.coupling);
-    tree.deltaV[slot] = inverse.linearInverse * v - inverse.coupling * w;
-    tree.deltaW[slot] = w;
-  };
+  // Backward substitution, root to leaf. A body's velocity change is final once its own row is
+  // done, so it is applied there.
   auto applyDelta = [&tree, &bodies](int32_t slot) {
     Body& body = bodies[tree.slotBodies[slot]];
     body.linearVelocity += tree.deltaV[slot];
@@ -266,7 +271,6 @@ void SolveJointTree(JointTree& tree, std::vector<Joint>& joints, std::vector<Bod
     const glm::vec3 x = -(link.invMass * y);
     joints[link.joint].linearImpulse -= link.sign * x;  // lambda = -x acts on the child; the joint's on B
     if (link.childSlot >= 0) {
-      applyInverse(link.childSlot);
       tree.deltaV[link.childSlot] -= link.lowerLinear * x;
       tree.deltaW[link.childSlot] -= link.lowerAngular * x;
       applyDelta(link.childSlot);
