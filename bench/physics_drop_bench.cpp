@@ -2,19 +2,18 @@
 // Drops the shared 15-box ragdoll (scenes/ragdoll_drop) for 5 s at 240 Hz and prints the cost
 // per step, the real-time factor and the quality figures of the drop, for the default world
 // settings and for scenes::FastDropSettings().
-#include "physics/world.h"
-#include "scenes/ragdoll_drop.h"
-
-#include <glm/geometric.hpp>
-#include <glm/gtc/quaternion.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdarg>
 #include <cstdio>
 #include <ctime>
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <string>
 #include <vector>
+
+#include "physics/world.h"
+#include "scenes/ragdoll_drop.h"
 
 namespace {
 
@@ -98,12 +97,13 @@ DropReport RunConfiguration(const char* name, const physics::WorldSettings& sett
 
   DropReport report;
   report.healthy = healthy;
-  report.row = Format("%s,%d,%d,%.2f,%.0f,%.2f,%.2f,%.3f,%.3f,%.4f,%s\n", name, settings.substepCount,
-                      settings.solveIterations, 1e6 * medianCpu / steps, simulated / medianCpu,
-                      1e6 * cpuSeconds[0] / steps, 1e6 * wallSeconds[kRuns / 2] / steps,
-                      1000.0 * double(peakPenetration), 1000.0 * double(peakJointError),
-                      double(world.GetTransform(ragdoll.bodies[0]).position.y), healthy ? "yes" : "no");
-  report.finalState = Format("final state of %s (body, position m, speed m/s, angular speed rad/s, ground force N):\n", name);
+  report.row =
+      Format("%s,%d,%d,%.2f,%.0f,%.2f,%.2f,%.3f,%.3f,%.4f,%s\n", name, settings.substepCount, settings.solveIterations,
+             1e6 * medianCpu / steps, simulated / medianCpu, 1e6 * cpuSeconds[0] / steps,
+             1e6 * wallSeconds[kRuns / 2] / steps, 1000.0 * double(peakPenetration), 1000.0 * double(peakJointError),
+             double(world.GetTransform(ragdoll.bodies[0]).position.y), healthy ? "yes" : "no");
+  report.finalState =
+      Format("final state of %s (body, position m, speed m/s, angular speed rad/s, ground force N):\n", name);
   std::vector<physics::ContactInfo> contacts;
   for (size_t i = 0; i < ragdoll.bodies.size(); ++i) {
     const physics::BodyId body = ragdoll.bodies[i];
@@ -111,9 +111,10 @@ DropReport RunConfiguration(const char* name, const physics::WorldSettings& sett
     world.GetGroundContacts(body, contacts);
     float force = 0.0f;
     for (const physics::ContactInfo& c : contacts) force += c.normalForce;
-    report.finalState += Format("  %-16s (% .3f, % .3f, % .3f)  %.4f  %.4f  %.1f\n", scene.boxes[i].name.c_str(),
-                                double(p.x), double(p.y), double(p.z), double(glm::length(world.GetLinearVelocity(body))),
-                                double(glm::length(world.GetAngularVelocity(body))), double(force));
+    report.finalState +=
+        Format("  %-16s (% .3f, % .3f, % .3f)  %.4f  %.4f  %.1f\n", scene.boxes[i].name.c_str(), double(p.x),
+               double(p.y), double(p.z), double(glm::length(world.GetLinearVelocity(body))),
+               double(glm::length(world.GetAngularVelocity(body))), double(force));
   }
   return report;
 }
@@ -124,9 +125,11 @@ int main() {
   const scenes::RagdollScene scene = scenes::MakeRagdollDropScene();
   const physics::WorldSettings defaults;
   std::printf("ragdoll drop: %zu boxes, %zu joints, %.1f s at %.0f Hz, 7 timed runs (median and best)\n",
-              scene.boxes.size(), scene.joints.size(), double(scene.simulatedSeconds), double(1.0f / defaults.timeStep));
-  std::printf("configuration,substeps,solves,us_per_step,real_time_factor,best_us_per_step,wall_us_per_step,"
-              "peak_ground_penetration_mm,peak_joint_separation_mm,final_pelvis_height_m,healthy\n");
+              scene.boxes.size(), scene.joints.size(), double(scene.simulatedSeconds),
+              double(1.0f / defaults.timeStep));
+  std::printf(
+      "configuration,substeps,solves,us_per_step,real_time_factor,best_us_per_step,wall_us_per_step,"
+      "peak_ground_penetration_mm,peak_joint_separation_mm,final_pelvis_height_m,healthy\n");
   const DropReport reports[] = {RunConfiguration("default_sequential_joints", defaults, scene),
                                 RunConfiguration("fast_direct_joints", scenes::FastDropSettings(), scene)};
   bool healthy = true;
