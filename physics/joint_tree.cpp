@@ -75,7 +75,7 @@ inline glm::mat3 SkewTimes(const glm::vec3& r, const glm::mat3& m) {
 
 // The inverse of a symmetric 3x3 matrix from one triangle of it: six cofactors instead of nine.
 // Every matrix inverted here is symmetric up to rounding (a mass, or G D^-1 G^T).
-glm::mat3 InverseSymmetric(const glm::mat3& m) {
+inline glm::mat3 InverseSymmetric(const glm::mat3& m) {
   const float c00 = m[1][1] * m[2][2] - m[1][2] * m[1][2];
   const float c01 = m[0][2] * m[1][2] - m[0][1] * m[2][2];
   const float c02 = m[0][1] * m[1][2] - m[0][2] * m[1][1];

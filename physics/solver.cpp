@@ -63,10 +63,6 @@ void PrepareJoints(WorldState& state, const SolverContext& context) {
   if (tree.active && (posesChanged || !tree.factorCurrent)) FactorJointTree(tree, state.joints, state.bodies);
 }
 
-void IntegrateVelocities(WorldState& state, float h) {
-  for (Body& body : state.bodies) IntegrateVelocity(body, state.settings.gravity, h);
-}
-
 void WarmStart(WorldState& state) {
   WarmStartJoints(state.joints, state.bodies, state.staticBody);
   WarmStartContacts(state.contacts, state.bodies, state.staticBody);
@@ -88,7 +84,7 @@ void Solve(WorldState& state, const SolverContext& context, bool useBias, bool e
 // factorisation) once for every pass that sees these poses (this sub-step's relax, the next
 // sub-step's warm start and solve).
 void IntegratePositions(WorldState& state, const SolverContext& context) {
-  for (Body& body : state.bodies) IntegratePosition(body, context.h);
+  IntegratePositions(state.bodies, context.h);
   for (Joint& joint : state.joints) {
     UpdateJointGeometry(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB], context);
   }
@@ -132,7 +128,7 @@ StepStatus Step(WorldState& state) {
   PrepareJoints(state, context);
 
   for (int substep = 0; substep < state.settings.substepCount; ++substep) {
-    IntegrateVelocities(state, context.h);
+    IntegrateVelocities(state.bodies, state.settings.gravity, context.h);
     if (context.warmStart) WarmStart(state);
     const int solves = state.settings.solveIterations;
     const int relaxes = state.settings.relaxIterations;
