@@ -155,6 +155,17 @@ void BuildJointTree(JointTree& tree, std::vector<Joint>& joints, int bodyCount, 
     if (!visited[body] && !adjacent[body].empty()) visit(body);
   }
 
+  // Grouped by depth (a stable sort keeps every parent link before its children), so the
+  // factorisation can work on one level's independent links side by side.
+  std::vector<int32_t> depth(size_t(bodyCount) + 1, 0);
+  for (const JointTreeLink& link : tree.links) depth[link.child] = (link.parent >= 0 ? depth[link.parent] : 0) + 1;
+  std::stable_sort(tree.links.begin(), tree.links.end(),
+                   [&depth](const JointTreeLink& x, const JointTreeLink& y) { return depth[x.child] < depth[y.child]; });
+  for (size_t i = 0; i < tree.links.size(); ++i) {
+    if (i == 0 || depth[tree.links[i].child] != depth[tree.links[i - 1].child]) tree.levelStarts.push_back(int32_t(i));
+  }
+  tree.levelStarts.push_back(int32_t(tree.links.size()));
+
   // Every parent body gets a slot, in link order.
   std::vector<int32_t> bodySlot(size_t(bodyCount), -1);
   for (const JointTreeLink& link : tree.links) {
@@ -199,31 +210,44 @@ void FactorJointTree(JointTree& tree, const std::vector<Joint>& joints, const st
         InverseSymmetric(tree.scratchC[slot] - glm::transpose(tree.scratchB[slot]) * inverse.coupling);
   };
 
-  for (auto it = tree.links.rbegin(); it != tree.links.rend(); ++it) {
-    JointTreeLink& link = *it;
-    const Joint& joint = joints[link.joint];
-    const Body& child = bodies[link.child];
-    link.childLever = link.sign > 0.0f ? joint.leverB : joint.leverA;
-    link.parentLever = link.sign > 0.0f ? joint.leverA : joint.leverB;
-    const glm::vec3& r = link.childLever;
-    glm::mat3 lowerLinear(child.invMass);
-    if (link.childSlot < 0) {
-      link.lowerAngular = TimesSkew(child.invInertiaWorld, r);
-    } else {
-      invert(link.childSlot);  // every link below the child came earlier in this loop
-      // L = D^-1 G^T with G^T = [1; [r]x]: angular rows T ([r]x - X^T), linear rows A^-1 - X (those).
-      const JointTreeInverse& inverse = tree.inverses[link.childSlot];
-      link.lowerAngular = inverse.schurInverse * (SkewMatrix(r) - glm::transpose(inverse.coupling));
-      lowerLinear = inverse.linearInverse - inverse.coupling * link.lowerAngular;
-      link.lowerLinear = lowerLinear;
+  // Leaf to root, one level at a time and each level in three passes over its links: the links
+  // of a level are independent, and a pass over several of them keeps more than one chain of
+  // 3x3 inversions in flight than link after link did (the factorisation was latency-bound).
+  for (size_t level = tree.levelStarts.size() - 1; level-- > 0;) {
+    const auto first = tree.links.begin() + tree.levelStarts[level];
+    const auto last = tree.links.begin() + tree.levelStarts[level + 1];
+    for (auto it = first; it != last; ++it) {
+      JointTreeLink& link = *it;
+      const Joint& joint = joints[link.joint];
+      link.childLever = link.sign > 0.0f ? joint.leverB : joint.leverA;
+      link.parentLever = link.sign > 0.0f ? joint.leverA : joint.leverB;
+      if (link.childSlot >= 0) invert(link.childSlot);  // every link below the child is done
     }
-    link.invMass = InverseSymmetric(lowerLinear - SkewTimes(r, link.lowerAngular));
-    if (link.parentSlot < 0) continue;
-    const glm::vec3& rp = link.parentLever;
-    const glm::mat3 sr = TimesSkew(link.invMass, rp);
-    tree.scratchA[link.parentSlot] += link.invMass;
-    tree.scratchB[link.parentSlot] -= sr;
-    tree.scratchC[link.parentSlot] -= SkewTimes(rp, sr);
+    for (auto it = first; it != last; ++it) {
+      JointTreeLink& link = *it;
+      const Body& child = bodies[link.child];
+      const glm::vec3& r = link.childLever;
+      glm::mat3 lowerLinear(child.invMass);
+      if (link.childSlot < 0) {
+        link.lowerAngular = TimesSkew(child.invInertiaWorld, r);
+      } else {
+        // L = D^-1 G^T with G^T = [1; [r]x]: angular rows T ([r]x - X^T), linear rows A^-1 - X (those).
+        const JointTreeInverse& inverse = tree.inverses[link.childSlot];
+        link.lowerAngular = inverse.schurInverse * (SkewMatrix(r) - glm::transpose(inverse.coupling));
+        lowerLinear = inverse.linearInverse - inverse.coupling * link.lowerAngular;
+        link.lowerLinear = lowerLinear;
+      }
+      link.invMass = InverseSymmetric(lowerLinear - SkewTimes(r, link.lowerAngular));
+    }
+    for (auto it = first; it != last; ++it) {
+      const JointTreeLink& link = *it;
+      if (link.parentSlot < 0) continue;
+      const glm::vec3& rp = link.parentLever;
+      const glm::mat3 sr = TimesSkew(link.invMass, rp);
+      tree.scratchA[link.parentSlot] += link.invMass;
+      tree.scratchB[link.parentSlot] -= sr;
+      tree.scratchC[link.parentSlot] -= SkewTimes(rp, sr);
+    }
   }
   for (int32_t slot : tree.rootSlots) invert(slot);
   tree.factorCurrent = true;

@@ -52,6 +52,7 @@ struct JointTree {
   int32_t builtJointCount = -1;  // the joint count the forest was built for
   bool factorCurrent = false;    // factorised at the bodies' present poses
   std::vector<JointTreeLink> links;       // root to leaf: every parent link before its children
+  std::vector<int32_t> levelStarts;       // links of depth d are [levelStarts[d], levelStarts[d + 1])
   std::vector<int32_t> slotBodies;        // per slot: its body
   std::vector<int32_t> rootSlots;         // slots of root bodies (no link above them)
   std::vector<JointTreeInverse> inverses; // per slot
