@@ -159,8 +159,9 @@ void BuildJointTree(JointTree& tree, std::vector<Joint>& joints, int bodyCount, 
   // factorisation can work on one level's independent links side by side.
   std::vector<int32_t> depth(size_t(bodyCount) + 1, 0);
   for (const JointTreeLink& link : tree.links) depth[link.child] = (link.parent >= 0 ? depth[link.parent] : 0) + 1;
-  std::stable_sort(tree.links.begin(), tree.links.end(),
-                   [&depth](const JointTreeLink& x, const JointTreeLink& y) { return depth[x.child] < depth[y.child]; });
+  std::stable_sort(tree.links.begin(), tree.links.end(), [&depth](const JointTreeLink& x, const JointTreeLink& y) {
+    return depth[x.child] < depth[y.child];
+  });
   for (size_t i = 0; i < tree.links.size(); ++i) {
     if (i == 0 || depth[tree.links[i].child] != depth[tree.links[i - 1].child]) tree.levelStarts.push_back(int32_t(i));
   }
