@@ -44,24 +44,31 @@ bool NearPlane(const PlaneShape& plane, const OrientedBox& box, float margin) {
   return glm::dot(plane.normal, box.center) - plane.offset - radius < margin;
 }
 
-void TangentBasis(const glm::vec3& n, glm::vec3& t1, glm::vec3& t2) {
-  // A fixed function of the normal, so a resting contact keeps its friction axes across steps.
-  t1 = std::fabs(n.x) >= 0.57735f ? glm::vec3(n.y, -n.x, 0.0f) : glm::vec3(0.0f, n.z, -n.y);
-  t1 = glm::normalize(t1);
-  t2 = glm::cross(n, t1);
+struct TangentBasis {
+  glm::vec3 t1, t2;
+};
+
+// A fixed function of the normal, so a resting contact keeps its friction axes across steps.
+TangentBasis MakeTangentBasis(const glm::vec3& n) {
+  TangentBasis basis;
+  basis.t1 = std::fabs(n.x) >= 0.57735f ? glm::vec3(n.y, -n.x, 0.0f) : glm::vec3(0.0f, n.z, -n.y);
+  basis.t1 = glm::normalize(basis.t1);
+  basis.t2 = glm::cross(n, basis.t1);
+  return basis;
 }
 
 // `contact` may hold a contact of an earlier step (Collide reuses the storage), so every field
 // the solver reads is set here; the row data is PrepareContacts' to fill.
 void InitContact(Contact& contact, uint64_t key, int32_t bodyA, int32_t bodyB, int32_t staticShape, float friction,
-                 const Manifold& manifold) {
+                 const Manifold& manifold, const TangentBasis& tangents) {
   contact.key = key;
   contact.bodyA = bodyA;
   contact.bodyB = bodyB;
   contact.staticShape = staticShape;
   contact.friction = friction;
   contact.normal = manifold.normal;
-  TangentBasis(manifold.normal, contact.tangent[0], contact.tangent[1]);
+  contact.tangent[0] = tangents.t1;
+  contact.tangent[1] = tangents.t2;
   contact.pointCount = manifold.pointCount;
   for (int i = 0; i < manifold.pointCount; ++i) {
     const ManifoldPoint& mp = manifold.points[i];
@@ -143,6 +150,9 @@ void Collide(const std::vector<Body>& bodies, const std::vector<StaticShape>& st
 
   for (int s = 0; s < int(statics.size()); ++s) {
     const StaticShape& shape = statics[s];
+    // Every manifold with a plane has the plane's normal, so its friction axes are found once.
+    const bool plane = shape.type == StaticShapeType::kPlane;
+    const TangentBasis planeTangents = plane ? MakeTangentBasis(shape.plane.normal) : TangentBasis{};
     for (int b = 0; b < bodyCount; ++b) {
       const Body& body = bodies[b];
       if (!FiltersPass(shape.categoryBits, shape.maskBits, body.categoryBits, body.maskBits)) continue;
@@ -150,7 +160,8 @@ void Collide(const std::vector<Body>& bodies, const std::vector<StaticShape>& st
       const Manifold manifold = CollideStatic(shape, boxes[b], margin);
       if (manifold.pointCount == 0) continue;
       InitContact(addContact(), (uint64_t(uint32_t(s)) << 31) | uint64_t(uint32_t(b)), -1, b, s,
-                  MixFriction(shape.friction, body.friction), manifold);
+                  MixFriction(shape.friction, body.friction), manifold,
+                  plane ? planeTangents : MakeTangentBasis(manifold.normal));
     }
   }
 
@@ -165,7 +176,8 @@ void Collide(const std::vector<Body>& bodies, const std::vector<StaticShape>& st
       if (std::binary_search(joinedPairs.begin(), joinedPairs.end(), key)) continue;
       const Manifold manifold = CollideBoxes(boxes[i], boxes[j], margin);
       if (manifold.pointCount == 0) continue;
-      InitContact(addContact(), key, i, j, -1, MixFriction(a.friction, b.friction), manifold);
+      InitContact(addContact(), key, i, j, -1, MixFriction(a.friction, b.friction), manifold,
+                  MakeTangentBasis(manifold.normal));
     }
   }
   fresh.resize(freshCount);
