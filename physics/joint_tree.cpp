@@ -47,7 +47,6 @@
 #include "physics/constraint_parts.h"
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/quaternion.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
@@ -87,15 +86,6 @@ inline glm::mat3 InverseSymmetric(const glm::mat3& m) {
   const glm::vec3 row1 = invDet * glm::vec3(c01, c11, c12);
   const glm::vec3 row2 = invDet * glm::vec3(c02, c12, c22);
   return glm::mat3(row0, row1, row2);
-}
-
-glm::mat3 WorldInertia(const Body& body) {
-  const glm::mat3 r = glm::mat3_cast(body.transform.rotation);
-  glm::mat3 scaled = r;
-  scaled[0] *= body.inertiaLocal.x;
-  scaled[1] *= body.inertiaLocal.y;
-  scaled[2] *= body.inertiaLocal.z;
-  return scaled * glm::transpose(r);
 }
 
 }  // namespace
@@ -198,7 +188,7 @@ void FactorJointTree(JointTree& tree, const std::vector<Joint>& joints, const st
     const Body& body = bodies[tree.slotBodies[slot]];
     tree.scratchA[slot] = glm::mat3(body.mass);
     tree.scratchB[slot] = glm::mat3(0.0f);
-    tree.scratchC[slot] = WorldInertia(body);
+    tree.scratchC[slot] = InverseSymmetric(body.invInertiaWorld);  // the world inertia
   }
 
   // Schur complement of the linear block; the explicit blocks of D^-1 are never formed, as every
