@@ -82,10 +82,10 @@ inline glm::mat3 InverseSymmetric(const glm::mat3& m) {
   const float c12 = m[0][1] * m[0][2] - m[0][0] * m[1][2];
   const float c22 = m[0][0] * m[1][1] - m[0][1] * m[0][1];
   const float invDet = 1.0f / (m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02);
-  const glm::vec3 row0 = invDet * glm::vec3(c00, c01, c02);
-  const glm::vec3 row1 = invDet * glm::vec3(c01, c11, c12);
-  const glm::vec3 row2 = invDet * glm::vec3(c02, c12, c22);
-  return glm::mat3(row0, row1, row2);
+  // Entry by entry: built from vec3 columns, the result went through the stack in pieces and was
+  // read back whole, which stalls store-to-load forwarding on this latency-bound path.
+  return glm::mat3(invDet * c00, invDet * c01, invDet * c02, invDet * c01, invDet * c11, invDet * c12,
+                   invDet * c02, invDet * c12, invDet * c22);
 }
 
 }  // namespace
