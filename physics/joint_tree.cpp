@@ -84,8 +84,8 @@ inline glm::mat3 InverseSymmetric(const glm::mat3& m) {
   const float invDet = 1.0f / (m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02);
   // Entry by entry: built from vec3 columns, the result went through the stack in pieces and was
   // read back whole, which stalls store-to-load forwarding on this latency-bound path.
-  return glm::mat3(invDet * c00, invDet * c01, invDet * c02, invDet * c01, invDet * c11, invDet * c12,
-                   invDet * c02, invDet * c12, invDet * c22);
+  return glm::mat3(invDet * c00, invDet * c01, invDet * c02, invDet * c01, invDet * c11, invDet * c12, invDet * c02,
+                   invDet * c12, invDet * c22);
 }
 
 }  // namespace
