@@ -476,6 +476,21 @@ void RiseController::EvaluateLimb(const LimbMove& limb, Limb which, float s, con
       out.endRotation = glm::normalize(frame * rotation);
       break;
     }
+    case LimbMode::kJoint: {
+      // Forward kinematics of the interpolated angles, which the IK turns back
+      // into the same angles: a swing along the joints' arcs, never through the root.
+      const int i = static_cast<int>(which);
+      const glm::vec3 angles = glm::mix(limb.from, limb.to, u);
+      const glm::quat frame = IsArm(which) ? trunkGoal.chestRotation : trunkGoal.pelvisRotation;
+      const glm::quat upper = frame * glm::angleAxis(angles.x, rig_.rootDofs[i][0].axis) *
+                              glm::angleAxis(angles.y, rig_.rootDofs[i][1].axis);
+      const glm::quat lower = upper * glm::angleAxis(angles.z, rig_.hinge[i].axis);
+      out.target = LimbRoot(def_.skeleton, rig_, trunkGoal, which) +
+                   upper * def_.skeleton.joints[rig_.lower[i]].restOffset +
+                   lower * def_.skeleton.joints[rig_.end[i]].restOffset;
+      out.endRotation = glm::normalize(lower * rotation);
+      break;
+    }
   }
 }
 
@@ -608,10 +623,14 @@ void RiseController::StartMove(Move move) {
   // However fast the style, a hand or foot crossing the world goes no faster
   // on average than kMaxLimbSpeed (the eased path peaks at about twice that):
   // a quick style on a long step otherwise whipped limbs past 10 m/s.
-  for (const LimbMove& limb : move.limbs) {
+  for (int i = 0; i < kLimbCount; ++i) {
+    const LimbMove& limb = move.limbs[i];
     if (limb.mode == LimbMode::kToePivot) continue;
-    // (For a limb carried by the trunk, its path relative to the trunk.)
-    const float path = glm::length(limb.to - limb.from) + 2.0f * limb.lift;
+    // (For a limb carried by the trunk, its path relative to the trunk; for one
+    // turned in its joints, the arc its end sweeps at full reach.)
+    const float path = limb.mode == LimbMode::kJoint
+                           ? glm::length(limb.to - limb.from) * (IsArm(static_cast<Limb>(i)) ? armReach_ : legReach_)
+                           : glm::length(limb.to - limb.from) + 2.0f * limb.lift;
     move.duration = std::max(move.duration, static_cast<double>(path / (kMaxLimbSpeed * std::max(limb.span, 0.1f))));
   }
   move_ = std::move(move);
@@ -653,79 +672,138 @@ void RiseController::PlanNext(const BodyReading& reading) {
   }
 }
 
+float RiseController::RollAngle(const glm::quat& segment) const {
+  const glm::vec3 front = segment * glm::vec3(0, 0, 1);
+  const glm::vec3 side = rollSign_ * (segment * glm::vec3(1, 0, 0));
+  return std::atan2(-glm::dot(side, ground_.normal), glm::dot(front, ground_.normal));
+}
+
+RiseController::LimbMove RiseController::RollLimb(const BodyReading& r, Limb limb,
+                                                  const std::array<float, 5>& anglesDeg) const {
+  const int i = static_cast<int>(limb);
+  const std::vector<glm::quat> local = LocalRotations(def_.skeleton, r.jointRotations);
+  float root[3] = {}, hinge[3] = {};
+  def_.JointAngles(rig_.upper[i], local[rig_.upper[i]], root);
+  def_.JointAngles(rig_.lower[i], local[rig_.lower[i]], hinge);
+  LimbMove m;
+  m.mode = LimbMode::kJoint;
+  m.from = glm::radians(glm::vec3(root[0], root[1], hinge[0]));
+  m.to = glm::radians(glm::vec3(anglesDeg[0], anglesDeg[1], anglesDeg[2]));
+  m.fromRotation = local[rig_.end[i]];
+  m.toRotation = def_.JointRotation(rig_.end[i], &anglesDeg[3]);
+  return m;
+}
+
+RiseController::TrunkPose RiseController::RolledTrunk(const BodyReading& r, float angle, float twist) const {
+  const TrunkPose measured = MeasuredTrunk(r);
+  const glm::quat pelvis = measured.pelvisRotation;
+  const BoneBox& box = def_.skeleton.joints[rig_.pelvis].box;
+  // On the back the trunk turns over the back edge of the roll side, past the
+  // side over its front edge.
+  const float frontOrBack = RollAngle(pelvis) < 0.5f * kPi ? -1.0f : 1.0f;
+  const glm::vec3 pivot = measured.pelvis + pelvis * (box.center + glm::vec3(rollSign_ * box.halfExtents.x, 0.0f,
+                                                                             frontOrBack * box.halfExtents.z));
+  const glm::quat turn = glm::angleAxis(rollSign_ * angle, pelvis * kUp);
+  TrunkPose rolled;
+  rolled.pelvis = pivot + turn * (measured.pelvis - pivot);
+  rolled.pelvisRotation = glm::normalize(turn * pelvis);
+  rolled.chestRotation = glm::normalize(rolled.pelvisRotation * glm::angleAxis(rollSign_ * twist, kUp));
+  return rolled;
+}
+
 RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   const glm::quat chest = r.jointRotations[rig_.chest];
-  const glm::vec3 face = chest * glm::vec3(0, 0, 1);
+  const glm::quat pelvis = r.jointRotations[rig_.pelvis];
   // Crouched on both feet with the CoM over them: Phase 2 directly.
   if (OnItsFeet(r)) return PlanRise(r);
+  const glm::vec3 face = chest * glm::vec3(0, 0, 1);
   // Face down already: Phase 0 goes straight to placing hands and feet.
-  if (glm::dot(face, ground_.normal) < -0.7f) return PlanPlace(r);
+  if (rollSign_ == 0.0f && glm::dot(face, ground_.normal) < -0.7f) return PlanPlace(r);
+  if (rollSign_ == 0.0f) {
+    // Roll over the side that is already down; flat on the back, the seed picks.
+    const float leftDown = -glm::dot(chest * glm::vec3(1, 0, 0), ground_.normal);
+    rollSign_ = std::fabs(leftDown) > 0.3f ? (leftDown > 0.0f ? 1.0f : -1.0f) : ((rng_() & 1u) ? 1.0f : -1.0f);
+  }
+  const float roll = std::min(RollAngle(pelvis), RollAngle(chest));
+  if (rollStage_ == RollStage::kLie && roll > glm::radians(150.0f)) return PlanPlace(r);
 
-  const glm::vec3 forward = HeadingForward(r);
-  const glm::vec3 left = glm::normalize(glm::cross(kUp, forward));  // prone left
-  // Roll on toward the side the face already turns to; from flat on the back,
-  // the seed picks the side.
-  float sideSign = glm::dot(face, left);
-  if (std::fabs(sideSign) < 0.2f) sideSign = (rng_() & 1u) ? 1.0f : -1.0f;
-  const glm::vec3 rollSide = sideSign > 0.0f ? left : -left;
+  RollStage stage;
+  if (roll < glm::radians(50.0f))
+    stage = rollStage_ == RollStage::kTuck ? RollStage::kPush : RollStage::kTuck;
+  else if (rollStage_ == RollStage::kProp)
+    stage = RollStage::kOver;
+  else if (rollStage_ == RollStage::kOver || roll > glm::radians(140.0f))
+    stage = RollStage::kLie;
+  else
+    stage = RollStage::kProp;
+  rollStage_ = stage;
 
+  heading_ = HeadingForward(r);
+  const glm::vec3 nearSide = rollSign_ * glm::normalize(glm::cross(kUp, heading_));  // on the back, the body's own side
   Move move;
   move.phase = RisePhase::kRoll;
   move.from = MeasuredTrunk(r);
-  move.to = move.from;
-  // Already on a side: no tuck, the roll carries on from there.
-  if (std::fabs(glm::dot(face, ground_.normal)) < 0.5f) rollTucked_ = true;
-  if (rollTucked_) {
-    // The body turns over toward rollSide: the planted foot and the servos
-    // drive the trunk toward face down, shifted by about its own width.
-    move.name = "roll";
-    move.duration = 1.6;
-    const float lyingHeight = Height(ground_, move.from.pelvis);
-    move.to.pelvis = Project(ground_, move.from.pelvis) + rollSide * 0.25f + ground_.normal * lyingHeight;
-    move.to.pelvisRotation = move.to.chestRotation = TrunkRotation(forward, 0.0f);
-  } else {
-    move.name = "tuck";
-    move.duration = 0.9;
-  }
-
-  for (int i = 0; i < kLimbCount; ++i) {
-    const Limb limb = static_cast<Limb>(i);
-    const int root = rig_.upper[i];
-    // Which side of the body the limb is on, seen in the world right now.
-    const bool onRollSide = glm::dot(r.jointPositions[root] - r.jointPositions[rig_.pelvis], rollSide) > 0.0f;
-    LimbMove& m = move.limbs[i];
-    if (!IsArm(limb) && !onRollSide) {
-      // The far leg is the pusher: it plants its foot beside the buttock with
-      // the knee up (tuck), then holds it there while the hip pushes the
-      // pelvis over (roll).
-      if (rollTucked_) {
-        m = HoldLimb(r, limb, true);
-      } else {
-        const glm::vec3 hip = r.jointPositions[root];
-        const glm::vec3 toe = Project(ground_, hip - forward * (0.5f * legReach_) - rollSide * 0.06f);
-        m = HoldLimb(r, limb, false);
-        m.toRotation = FootRotation(-forward, 0.0f);
-        m.to = AnkleForToe(toe, m.toRotation);
-        m.lift = static_cast<float>(spec_.style.stepHeightM);
-      }
-      continue;
+  const Limb nearArm = rollSign_ > 0.0f ? Limb::kHandLeft : Limb::kHandRight;
+  const Limb farArm = OtherHand(nearArm);
+  const Limb nearLeg = rollSign_ > 0.0f ? Limb::kFootLeft : Limb::kFootRight;
+  const Limb farLeg = rollSign_ > 0.0f ? Limb::kFootRight : Limb::kFootLeft;
+  auto set = [&](Limb limb, const LimbMove& m) { move.limbs[static_cast<int>(limb)] = m; };
+  // The arm on the roll side goes overhead so the body rolls over the
+  // shoulder instead of onto the arm.
+  set(nearArm, RollLimb(r, nearArm, {165, 15, 10, 0, 0}));
+  set(nearLeg, RollLimb(r, nearLeg, {5, 0, 5, -20, 0}));
+  switch (stage) {
+    case RollStage::kTuck: {
+      // The far knee comes up and its foot is set beside the buttock, the far
+      // arm reaches across: the push and the reach that start a roll.
+      move.name = "tuck";
+      move.duration = 0.9;
+      move.to = RolledTrunk(r, 0.0f, glm::radians(30.0f));
+      const glm::vec3 hip = r.jointPositions[rig_.upper[static_cast<int>(farLeg)]];
+      const glm::vec3 toe = Project(ground_, hip - heading_ * (0.5f * legReach_) - nearSide * 0.06f);
+      LimbMove foot = HoldLimb(r, farLeg, false);
+      foot.toRotation = FootRotation(-heading_, 0.0f);
+      foot.to = AnkleForToe(toe, foot.toRotation);
+      foot.lift = static_cast<float>(spec_.style.stepHeightM);
+      set(farLeg, foot);
+      set(farArm, RollLimb(r, farArm, {90, -30, 15, 0, 0}));
+      break;
     }
-    m.mode = LimbMode::kBody;
-    const glm::quat frame = IsArm(limb) ? r.jointRotations[rig_.chest] : r.jointRotations[rig_.pelvis];
-    m.from = glm::inverse(frame) * (r.jointPositions[rig_.end[i]] - r.jointPositions[root]);
-    m.fromRotation = glm::inverse(frame) * r.jointRotations[rig_.end[i]];
-    m.toRotation = glm::quat(1, 0, 0, 0);
-    if (IsArm(limb)) {
-      // The arm on the roll side goes overhead so the body rolls over the
-      // shoulder; the other reaches across the chest and pulls the body over.
-      m.to = onRollSide ? glm::vec3(0.0f, 0.92f * armReach_, 0.1f) : glm::vec3(0.0f, 0.15f, 0.85f) * armReach_;
-      m.span = 0.6f;
-    } else {
-      m.to = glm::vec3(0.0f, -0.98f * legReach_, 0.0f);
-    }
+    case RollStage::kPush:
+      // The planted far foot pushes the hip up and over onto the side.
+      move.name = "push off";
+      move.duration = 1.2;
+      move.to = RolledTrunk(r, glm::radians(100.0f) - roll, glm::radians(40.0f));
+      set(farLeg, HoldLimb(r, farLeg, true));
+      set(farArm, RollLimb(r, farArm, {100, -30, 20, 0, 0}));
+      break;
+    case RollStage::kProp:
+      // On the side: the top hand and knee reach forward to the ground.
+      move.name = "prop";
+      move.duration = 0.9;
+      move.to = RolledTrunk(r, 0.0f, glm::radians(20.0f));
+      set(farArm, RollLimb(r, farArm, {90, 0, 30, 0, 0}));
+      set(farLeg, RollLimb(r, farLeg, {80, -10, 90, -20, 0}));
+      break;
+    case RollStage::kOver:
+      // The top hand and foot hold where they are and pull the trunk over onto the front.
+      move.name = "over";
+      move.duration = 1.2;
+      move.to = RolledTrunk(r, kPi - roll, glm::radians(20.0f));
+      set(farArm, HoldLimb(r, farArm, true));
+      set(farLeg, HoldLimb(r, farLeg, true));
+      break;
+    case RollStage::kLie:
+    case RollStage::kNone:
+      // Face down: legs straight and together, the top hand beside the chest, as a body lying prone.
+      move.name = "lie";
+      move.duration = 0.8;
+      move.to = RolledTrunk(r, 0.0f, 0.0f);
+      set(farArm, RollLimb(r, farArm, {20, 20, 60, 0, 0}));
+      set(nearLeg, RollLimb(r, nearLeg, {0, 0, 5, -50, 0}));
+      set(farLeg, RollLimb(r, farLeg, {0, 0, 5, -50, 0}));
+      break;
   }
-  rollTucked_ = !rollTucked_;
-  heading_ = forward;
   return move;
 }
 
