@@ -93,6 +93,12 @@ constexpr float kFootWalkDistance = 0.85f;  // m
 constexpr float kFootStep = 0.3f;          // m
 constexpr float kFootLead = 0.1f;          // m
 constexpr float kMinFootStep = 0.06f;      // m: a reachable step shorter than this ends the walk-in
+// The roll (RiseController::RollAngle: 0 on the back, pi on the front): the far
+// foot pushes until the pelvis has turned this far; the chest past this has
+// led over and the legs straighten; both past this lie prone.
+constexpr float kPushedRoll = glm::radians(60.0f);
+constexpr float kChestOverRoll = glm::radians(120.0f);
+constexpr float kProneRoll = glm::radians(135.0f);
 
 // On hands and feet: where the plan is quasi-static and the CoM is held by feedback.
 bool OnHandsAndFeet(RisePhase phase) { return phase == RisePhase::kPush || phase == RisePhase::kCrawl; }
@@ -724,22 +730,19 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
     const float leftDown = -glm::dot(chest * glm::vec3(1, 0, 0), ground_.normal);
     rollSign_ = std::fabs(leftDown) > 0.3f ? (leftDown > 0.0f ? 1.0f : -1.0f) : ((rng_() & 1u) ? 1.0f : -1.0f);
   }
-  const float roll = std::min(RollAngle(pelvis), RollAngle(chest));
-  if (rollStage_ == RollStage::kLie && roll > glm::radians(150.0f)) return PlanPlace(r);
+  const float pelvisRoll = RollAngle(pelvis), chestRoll = RollAngle(chest);
+  const bool prone = std::min(pelvisRoll, chestRoll) > kProneRoll;
+  // Lying on the front with the legs straightened: the prone path takes over.
+  if (rollStage_ == RollStage::kLie && prone) return PlanPlace(r);
 
-  RollStage stage;
-  if (roll < glm::radians(50.0f))
-    stage = rollStage_ == RollStage::kTuck ? RollStage::kPush : RollStage::kTuck;
-  else if (rollStage_ == RollStage::kProp)
-    stage = RollStage::kOver;
-  else if (rollStage_ == RollStage::kOver || roll > glm::radians(140.0f))
-    stage = RollStage::kLie;
-  else
-    stage = RollStage::kProp;
+  // Each move is chosen by how far the trunk has turned, so one that does not
+  // get the body as far as planned is followed by the one that fits where it is.
+  RollStage stage = RollStage::kOver;
+  if (prone || chestRoll > kChestOverRoll) stage = RollStage::kLie;
+  if (pelvisRoll < kPushedRoll) stage = rollStage_ == RollStage::kNone ? RollStage::kTuck : RollStage::kPush;
   rollStage_ = stage;
 
   heading_ = HeadingForward(r);
-  const glm::vec3 nearSide = rollSign_ * glm::normalize(glm::cross(kUp, heading_));  // on the back, the body's own side
   Move move;
   move.phase = RisePhase::kRoll;
   move.from = MeasuredTrunk(r);
@@ -754,48 +757,52 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   set(nearLeg, RollLimb(r, nearLeg, {5, 0, 5, -20, 0}));
   switch (stage) {
     case RollStage::kTuck: {
-      // The far knee comes up and its foot is set beside the buttock, the far
-      // arm reaches across: the push and the reach that start a roll.
+      // The far knee comes up and its foot is set flat beside the buttock and
+      // out to the side, where pushing on it lifts that hip up and over; the
+      // near arm is on its way overhead.
       move.name = "tuck";
-      move.duration = 0.9;
-      move.to = RolledTrunk(r, 0.0f, glm::radians(30.0f));
+      move.duration = 0.6;
+      move.to = move.from;
       const glm::vec3 hip = r.jointPositions[rig_.upper[static_cast<int>(farLeg)]];
-      const glm::vec3 toe = Project(ground_, hip - heading_ * (0.5f * legReach_) - nearSide * 0.06f);
+      const glm::vec3 farSide = SafeNormalize(Horizontal(pelvis * glm::vec3(-rollSign_, 0.0f, 0.0f)), glm::vec3(0));
+      const glm::vec3 toe = Project(ground_, hip - heading_ * (0.5f * legReach_) + farSide * (0.25f * legReach_));
       LimbMove foot = HoldLimb(r, farLeg, false);
       foot.toRotation = FootRotation(-heading_, 0.0f);
       foot.to = AnkleForToe(toe, foot.toRotation);
       foot.lift = static_cast<float>(spec_.style.stepHeightM);
       set(farLeg, foot);
-      set(farArm, RollLimb(r, farArm, {90, -30, 15, 0, 0}));
+      set(nearArm, RollLimb(r, nearArm, {90, 20, 10, 0, 0}));
+      set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
       break;
     }
     case RollStage::kPush:
-      // The planted far foot pushes the hip up and over onto the side.
+      // The planted far foot holds its place while the trunk's goal turns on
+      // over the near edge of the back: the leg's servos push the hip over.
+      // (Less than half a turn per move: the goal is reached by slerp, which
+      // would take the other way round.)
       move.name = "push off";
-      move.duration = 1.2;
-      move.to = RolledTrunk(r, glm::radians(100.0f) - roll, glm::radians(40.0f));
+      move.duration = 0.6;
+      move.to = RolledTrunk(r, glm::radians(120.0f) - pelvisRoll, 0.0f);
+      move.rolledTo = kPushedRoll;
       set(farLeg, HoldLimb(r, farLeg, true));
-      set(farArm, RollLimb(r, farArm, {100, -30, 20, 0, 0}));
+      set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
       break;
-    case RollStage::kProp:
-      // On the side: the top hand and knee reach forward to the ground.
-      move.name = "prop";
-      move.duration = 0.9;
-      move.to = RolledTrunk(r, 0.0f, glm::radians(20.0f));
-      set(farArm, RollLimb(r, farArm, {90, 0, 30, 0, 0}));
-      set(farLeg, RollLimb(r, farLeg, {80, -10, 90, -20, 0}));
-      break;
-    case RollStage::kOver:
-      // The top hand and foot hold where they are and pull the trunk over onto the front.
+    case RollStage::kOver: {
+      // Past the side: the chest leads over onto the front, the top hand comes
+      // down beside the head. A foot still planted from the push holds the
+      // pelvis from falling back, so the chest can lead further.
       move.name = "over";
-      move.duration = 1.2;
-      move.to = RolledTrunk(r, kPi - roll, glm::radians(20.0f));
-      set(farArm, HoldLimb(r, farArm, true));
-      set(farLeg, HoldLimb(r, farLeg, true));
+      move.duration = 0.6;
+      const bool pushing = planted_[static_cast<int>(farLeg)];
+      move.to = RolledTrunk(r, 0.0f, glm::radians(pushing ? 55.0f : 30.0f));
+      set(farArm, RollLimb(r, farArm, {45, 45, 90, 0, 0}));
+      set(farLeg, pushing ? HoldLimb(r, farLeg, true) : RollLimb(r, farLeg, {40, -10, 60, -20, 0}));
       break;
+    }
     case RollStage::kLie:
     case RollStage::kNone:
-      // Face down: legs straight and together, the top hand beside the chest, as a body lying prone.
+      // The legs straighten and the spine untwists: straightening the top leg
+      // turns the pelvis after the chest onto the front, as a body lying prone.
       move.name = "lie";
       move.duration = 0.8;
       move.to = RolledTrunk(r, 0.0f, 0.0f);
@@ -1310,7 +1317,10 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     // Quasi-static pace: progress slows while the pelvis lags its goal.
     const PoseGoal now = GoalAt(move_, progress_, reading);
     const float lag = glm::length(now.pelvisPosition - reading.jointPositions[rig_.pelvis]);
-    const float gate = std::clamp((kGateStop - lag) / (kGateStop - kGateError), 0.15f, 1.0f);
+    // A roll's trunk goal is only where the planted limbs push toward; how far
+    // the body has come is its roll angle (Move::rolledTo), not this lag.
+    const bool rolling = move_.phase == RisePhase::kRoll;
+    const float gate = rolling ? 1.0f : std::clamp((kGateStop - lag) / (kGateStop - kGateError), 0.15f, 1.0f);
     progress_ = std::min(1.0f, progress_ + static_cast<float>(dt / move_.duration) * gate);
     trace_.trackingError = lag;
     if (lag < kGateStop) stalledSince_ = -1.0;
@@ -1338,11 +1348,12 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
       progress_ = 1.0f;
     }
     const bool stalled = stalledSince_ >= 0.0 && reading.time - stalledSince_ > kStallTime;
-    if (stalled) {
+    const bool rolled = move_.rolledTo > 0.0f && RollAngle(reading.jointRotations[rig_.pelvis]) >= move_.rolledTo;
+    if (stalled || rolled) {
       // The body cannot follow this move: plan again from where it is.
       stalledSince_ = -1.0;
       PlanNext(reading);
-    } else if (progress_ >= 1.0f && lag < kGateStop) {
+    } else if (progress_ >= 1.0f && (lag < kGateStop || rolling)) {
       if (phase_ == RisePhase::kStand) {
         finished_ = reading.time - standTime_ >= kStandHold && reading.maxBodySpeed < kRestSpeed;
         if (!finished_) PlanNext(reading);

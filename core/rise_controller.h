@@ -86,7 +86,7 @@ class RiseController {
   };
   enum class LimbMode { kWorld, kToePivot, kBody, kJoint };
   // The roll's moves, in order (see PlanRoll).
-  enum class RollStage { kNone, kTuck, kPush, kProp, kOver, kLie };
+  enum class RollStage { kNone, kTuck, kPush, kOver, kLie };
   struct LimbMove {
     LimbMode mode = LimbMode::kWorld;
     // wrist/ankle (kWorld), toe point (kToePivot), in the trunk frame (kBody), or the
@@ -106,6 +106,7 @@ class RiseController {
     bool keepComOverFeet = false;     // re-centre the pelvis so the CoM stays over the feet
     std::array<std::array<float, 2>, 2> legPitches{};  // rising: each leg's shin and thigh pitch at the start
     int landing = -1;                 // a limb being put down: the move ends when it touches
+    float rolledTo = 0.0f;            // rolling: the move ends once the pelvis has turned this far (RollAngle), rad
   };
 
   // Planning (each returns the next move from the measured state).
