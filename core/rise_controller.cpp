@@ -790,11 +790,11 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
     case RollStage::kOver: {
       // Past the side: the chest leads over onto the front, the top hand comes
       // down beside the head. A foot still planted from the push holds the
-      // pelvis from falling back, so the chest can lead further.
+      // pelvis from falling back, so the chest can lead by the spine's full twist.
       move.name = "over";
-      move.duration = 0.6;
+      move.duration = 0.9;
       const bool pushing = planted_[static_cast<int>(farLeg)];
-      move.to = RolledTrunk(r, 0.0f, glm::radians(pushing ? 55.0f : 30.0f));
+      move.to = RolledTrunk(r, 0.0f, glm::radians(pushing ? 65.0f : 30.0f));
       set(farArm, RollLimb(r, farArm, {45, 45, 90, 0, 0}));
       set(farLeg, pushing ? HoldLimb(r, farLeg, true) : RollLimb(r, farLeg, {40, -10, 60, -20, 0}));
       break;
@@ -804,7 +804,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       // The legs straighten and the spine untwists: straightening the top leg
       // turns the pelvis after the chest onto the front, as a body lying prone.
       move.name = "lie";
-      move.duration = 0.8;
+      move.duration = 0.6;
       move.to = RolledTrunk(r, 0.0f, 0.0f);
       set(farArm, RollLimb(r, farArm, {20, 20, 60, 0, 0}));
       set(nearLeg, RollLimb(r, nearLeg, {0, 0, 5, -50, 0}));
