@@ -803,10 +803,13 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
     case RollStage::kNone:
       // The legs straighten and the spine untwists: straightening the top leg
       // turns the pelvis after the chest onto the front, as a body lying prone.
+      // The arm overhead swings out along the ground, nearer to where the
+      // hands are placed next.
       move.name = "lie";
       move.duration = 0.6;
       move.to = RolledTrunk(r, 0.0f, 0.0f);
       set(farArm, RollLimb(r, farArm, {20, 20, 60, 0, 0}));
+      set(nearArm, RollLimb(r, nearArm, {165, 60, 10, 0, 0}));
       set(nearLeg, RollLimb(r, nearLeg, {0, 0, 5, -50, 0}));
       set(farLeg, RollLimb(r, farLeg, {0, 0, 5, -50, 0}));
       break;
