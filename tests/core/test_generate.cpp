@@ -212,7 +212,7 @@ TEST_CASE("roll: from the back or a side the body rolls onto its front and the p
                 {rise::Posture::kSideLeft, 1.5, 45.0},
                 {rise::Posture::kSideRight, 1.95, 95.0}};
   for (const auto& start : starts) {
-    INFO("posture " << static_cast<int>(start.posture) << ", " << start.heightM << " m, " << start.massKg << " kg");
+    INFO(rise::PostureName(start.posture) << ", " << start.heightM << " m, " << start.massKg << " kg");
     const RollOutcome roll = Roll(start.posture, start.heightM, start.massKg);
     CHECK(roll.placeTime > 0.0);
     CHECK(roll.placeTime < 4.8);
@@ -223,9 +223,10 @@ TEST_CASE("roll: from the back or a side the body rolls onto its front and the p
 }
 
 TEST_CASE("roll: a foot planted to push the body over does not slide" * doctest::may_fail()) {
-  // The far foot set beside the buttock pushes the hip over and then props
-  // it while the chest leads; today it slides 6-25 cm (see the roll's notes in
-  // core/rise_controller.cpp), so this bar is reported, not yet enforced.
+  // The far foot set beside the buttock pushes the hip over and then props it
+  // while the chest leads. Today it slides 6-25 cm as the hip goes up (the
+  // leg straightens and pushes the body headward as much as up), so this bar
+  // is reported, not yet enforced.
   const RollOutcome roll = Roll(rise::Posture::kSupine, 1.75, 70.0);
   CHECK(roll.plantedSlip <= 0.05);
 }
