@@ -94,8 +94,10 @@ constexpr float kFootStep = 0.3f;          // m
 constexpr float kFootLead = 0.1f;          // m
 constexpr float kMinFootStep = 0.06f;      // m: a reachable step shorter than this ends the walk-in
 // The roll (RiseController::RollAngle: 0 on the back, pi on the front): the far
-// foot pushes until the pelvis has turned this far; the chest past this has
-// led over and the legs straighten; both past this lie prone.
+// foot pushes until the pelvis has turned this far, or has pushed off once
+// the pelvis is past kLiftOffRoll; the chest past kChestOverRoll has led over
+// and the legs straighten; both past kProneRoll lie prone.
+constexpr float kLiftOffRoll = glm::radians(30.0f);
 constexpr float kPushedRoll = glm::radians(60.0f);
 constexpr float kChestOverRoll = glm::radians(120.0f);
 constexpr float kProneRoll = glm::radians(135.0f);
@@ -722,6 +724,8 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   const glm::quat pelvis = r.jointRotations[rig_.pelvis];
   // Crouched on both feet with the CoM over them: Phase 2 directly.
   if (OnItsFeet(r)) return PlanRise(r);
+  // From rest (the start, or after a fall) a roll starts afresh.
+  if (phase_ == RisePhase::kSettle) rollSign_ = 0.0f, rollStage_ = RollStage::kNone;
   const glm::vec3 face = chest * glm::vec3(0, 0, 1);
   // Face down already: Phase 0 goes straight to placing hands and feet.
   if (rollSign_ == 0.0f && glm::dot(face, ground_.normal) < -0.7f) return PlanPlace(r);
@@ -735,21 +739,24 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   // Lying on the front with the legs straightened: the prone path takes over.
   if (rollStage_ == RollStage::kLie && prone) return PlanPlace(r);
 
+  const Limb nearArm = rollSign_ > 0.0f ? Limb::kHandLeft : Limb::kHandRight;
+  const Limb farArm = OtherHand(nearArm);
+  const Limb nearLeg = rollSign_ > 0.0f ? Limb::kFootLeft : Limb::kFootRight;
+  const Limb farLeg = rollSign_ > 0.0f ? Limb::kFootRight : Limb::kFootLeft;
+
   // Each move is chosen by how far the trunk has turned, so one that does not
   // get the body as far as planned is followed by the one that fits where it is.
   RollStage stage = RollStage::kOver;
   if (prone || chestRoll > kChestOverRoll) stage = RollStage::kLie;
   if (pelvisRoll < kPushedRoll) stage = rollStage_ == RollStage::kNone ? RollStage::kTuck : RollStage::kPush;
+  const bool pushedOff = pelvisRoll > kLiftOffRoll && !r.touching[static_cast<int>(farLeg)];
+  if (stage == RollStage::kPush && pushedOff) stage = RollStage::kOver;
   rollStage_ = stage;
 
   heading_ = HeadingForward(r);
   Move move;
   move.phase = RisePhase::kRoll;
   move.from = MeasuredTrunk(r);
-  const Limb nearArm = rollSign_ > 0.0f ? Limb::kHandLeft : Limb::kHandRight;
-  const Limb farArm = OtherHand(nearArm);
-  const Limb nearLeg = rollSign_ > 0.0f ? Limb::kFootLeft : Limb::kFootRight;
-  const Limb farLeg = rollSign_ > 0.0f ? Limb::kFootRight : Limb::kFootLeft;
   auto set = [&](Limb limb, const LimbMove& m) { move.limbs[static_cast<int>(limb)] = m; };
   // The arm on the roll side goes overhead so the body rolls over the
   // shoulder instead of onto the arm.
@@ -1351,7 +1358,15 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
       progress_ = 1.0f;
     }
     const bool stalled = stalledSince_ >= 0.0 && reading.time - stalledSince_ > kStallTime;
-    const bool rolled = move_.rolledTo > 0.0f && RollAngle(reading.jointRotations[rig_.pelvis]) >= move_.rolledTo;
+    // A move that turns the body over ends once it has, or once a foot
+    // pushing it leaves the ground with the hip up: that push is spent, and
+    // held on, the foot would be dragged.
+    bool rolled = false;
+    if (move_.rolledTo > 0.0f) {
+      const float turned = RollAngle(reading.jointRotations[rig_.pelvis]);
+      rolled = turned >= move_.rolledTo;
+      for (int i = 2; i < 4; ++i) rolled = rolled || (planted_[i] && !reading.touching[i] && turned > kLiftOffRoll);
+    }
     if (stalled || rolled) {
       // The body cannot follow this move: plan again from where it is.
       stalledSince_ = -1.0;

@@ -116,7 +116,8 @@ class RiseController {
   // its front about its own long axis, rolling toward rollSign_'s side: 0 on the
   // back, pi/2 on that side, pi on the front.
   float RollAngle(const glm::quat& segment) const;
-  // A limb of a roll pose, set in joint angles (deg) so its path is the joint's own arc.
+  // A limb of a roll pose, set by its joints' angles in degrees (the root's two,
+  // the hinge's, the end's two), so it swings along the joints' own arcs.
   LimbMove RollLimb(const BodyReading& reading, Limb limb, const std::array<float, 5>& anglesDeg) const;
   // The measured trunk turned on by `angle` about its long axis toward the roll
   // side, pivoting on the edge it rolls over, the chest turned `twist` further.
