@@ -788,8 +788,8 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       // (Less than half a turn per move: the goal is reached by slerp, which
       // would take the other way round.)
       move.name = "push off";
-      move.duration = 0.6;
-      move.to = RolledTrunk(r, glm::radians(120.0f) - pelvisRoll, 0.0f);
+      move.duration = 0.8;
+      move.to = RolledTrunk(r, glm::radians(140.0f) - pelvisRoll, 0.0f);
       move.rolledTo = kPushedRoll;
       set(farLeg, HoldLimb(r, farLeg, true));
       set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
