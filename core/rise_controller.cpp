@@ -99,7 +99,7 @@ constexpr float kMinFootStep = 0.06f;      // m: a reachable step shorter than t
 // and the legs straighten; both past kProneRoll lie prone.
 constexpr float kLiftOffRoll = glm::radians(30.0f);
 constexpr float kPushedRoll = glm::radians(60.0f);
-constexpr float kChestOverRoll = glm::radians(120.0f);
+constexpr float kChestOverRoll = glm::radians(125.0f);
 constexpr float kProneRoll = glm::radians(135.0f);
 
 // On hands and feet: where the plan is quasi-static and the CoM is held by feedback.
