@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: MIT
 // Drops the shared 15-box ragdoll (scenes/ragdoll_drop) for 5 s at 240 Hz and prints the cost
-// per step, the real-time factor and the quality figures of the drop.
-#include "physics/world.h"
-#include "scenes/ragdoll_drop.h"
-
-#include <glm/geometric.hpp>
-#include <glm/gtc/quaternion.hpp>
-
+// per step, the real-time factor and the quality figures of the drop, for the default world
+// settings and for scenes::FastDropSettings().
 #include <algorithm>
 #include <chrono>
+#include <cstdarg>
 #include <cstdio>
 #include <ctime>
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <string>
+#include <vector>
+
+#include "physics/world.h"
+#include "scenes/ragdoll_drop.h"
 
 namespace {
 
@@ -30,11 +33,31 @@ float GroundPenetration(const physics::World& world, const scenes::BuiltRagdoll&
   return -lowest;
 }
 
-}  // namespace
+double ThreadSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
 
-int main() {
-  const scenes::RagdollScene scene = scenes::MakeRagdollDropScene();
-  const physics::WorldSettings settings;
+struct DropReport {
+  std::string row;         // one CSV row of the table
+  std::string finalState;  // one line per body after the drop
+  bool healthy = true;
+};
+
+std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
+std::string Format(const char* format, ...) {
+  char text[512];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(text, sizeof(text), format, args);
+  va_end(args);
+  return text;
+}
+
+// Drops the ragdoll with `settings`: quality measured after every step, then timed runs.
+DropReport RunConfiguration(const char* name, const physics::WorldSettings& settings,
+                            const scenes::RagdollScene& scene) {
   const int steps = int(scene.simulatedSeconds / settings.timeStep + 0.5f);
 
   // Quality run: measured every step, not timed.
@@ -51,38 +74,36 @@ int main() {
     }
   }
 
-  // Timing runs: the same scene from scratch; the best of several runs filters out other load.
-  // Thread CPU time is the cost on one core even when other processes share the machine; wall
-  // time is printed beside it.
-  constexpr int kRuns = 5;
-  double bestCpuSeconds = 1e30;
-  double bestWallSeconds = 1e30;
+  // Timing runs: the same scene from scratch. Thread CPU time is the cost on one core even when
+  // other processes share the machine; the median and the best run are printed, and wall time
+  // (median) beside them.
+  constexpr int kRuns = 7;
+  std::vector<double> cpuSeconds;
+  std::vector<double> wallSeconds;
   for (int run = 0; run < kRuns; ++run) {
     physics::World timed(settings);
     scenes::BuildRagdollDrop(scene, timed);
-    timespec cpuStart{}, cpuEnd{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &cpuStart);
+    const double cpuStart = ThreadSeconds();
     const auto wallStart = std::chrono::steady_clock::now();
     for (int i = 0; i < steps; ++i) timed.Step();
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - wallStart;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &cpuEnd);
-    const double cpu = double(cpuEnd.tv_sec - cpuStart.tv_sec) + 1e-9 * double(cpuEnd.tv_nsec - cpuStart.tv_nsec);
-    bestCpuSeconds = std::min(bestCpuSeconds, cpu);
-    bestWallSeconds = std::min(bestWallSeconds, wall.count());
+    cpuSeconds.push_back(ThreadSeconds() - cpuStart);
+    wallSeconds.push_back(wall.count());
   }
-  const double microsPerStep = 1e6 * bestCpuSeconds / steps;
-  const double realTimeFactor = double(steps) * double(settings.timeStep) / bestCpuSeconds;
+  std::sort(cpuSeconds.begin(), cpuSeconds.end());
+  std::sort(wallSeconds.begin(), wallSeconds.end());
+  const double medianCpu = cpuSeconds[kRuns / 2];
+  const double simulated = double(steps) * double(settings.timeStep);
 
-  std::printf("ragdoll drop: %zu boxes, %zu joints, %d steps of %.6f s, %d sub-steps\n", ragdoll.bodies.size(),
-              ragdoll.joints.size(), steps, double(settings.timeStep), settings.substepCount);
-  std::printf("us_per_step,%.2f\n", microsPerStep);
-  std::printf("real_time_factor,%.0f\n", realTimeFactor);
-  std::printf("wall_us_per_step,%.2f\n", 1e6 * bestWallSeconds / steps);
-  std::printf("peak_ground_penetration_mm,%.3f\n", 1000.0 * double(peakPenetration));
-  std::printf("peak_joint_separation_mm,%.3f\n", 1000.0 * double(peakJointError));
-  std::printf("final_pelvis_height_m,%.4f\n", double(world.GetTransform(ragdoll.bodies[0]).position.y));
-  std::printf("healthy,%s\n", healthy ? "yes" : "no");
-  std::printf("final state (body, position m, speed m/s, angular speed rad/s, ground force N):\n");
+  DropReport report;
+  report.healthy = healthy;
+  report.row =
+      Format("%s,%d,%d,%.2f,%.0f,%.2f,%.2f,%.3f,%.3f,%.4f,%s\n", name, settings.substepCount, settings.solveIterations,
+             1e6 * medianCpu / steps, simulated / medianCpu, 1e6 * cpuSeconds[0] / steps,
+             1e6 * wallSeconds[kRuns / 2] / steps, 1000.0 * double(peakPenetration), 1000.0 * double(peakJointError),
+             double(world.GetTransform(ragdoll.bodies[0]).position.y), healthy ? "yes" : "no");
+  report.finalState =
+      Format("final state of %s (body, position m, speed m/s, angular speed rad/s, ground force N):\n", name);
   std::vector<physics::ContactInfo> contacts;
   for (size_t i = 0; i < ragdoll.bodies.size(); ++i) {
     const physics::BodyId body = ragdoll.bodies[i];
@@ -90,9 +111,32 @@ int main() {
     world.GetGroundContacts(body, contacts);
     float force = 0.0f;
     for (const physics::ContactInfo& c : contacts) force += c.normalForce;
-    std::printf("  %-16s (% .3f, % .3f, % .3f)  %.4f  %.4f  %.1f\n", scene.boxes[i].name.c_str(), double(p.x),
-                double(p.y), double(p.z), double(glm::length(world.GetLinearVelocity(body))),
-                double(glm::length(world.GetAngularVelocity(body))), double(force));
+    report.finalState +=
+        Format("  %-16s (% .3f, % .3f, % .3f)  %.4f  %.4f  %.1f\n", scene.boxes[i].name.c_str(), double(p.x),
+               double(p.y), double(p.z), double(glm::length(world.GetLinearVelocity(body))),
+               double(glm::length(world.GetAngularVelocity(body))), double(force));
   }
+  return report;
+}
+
+}  // namespace
+
+int main() {
+  const scenes::RagdollScene scene = scenes::MakeRagdollDropScene();
+  const physics::WorldSettings defaults;
+  std::printf("ragdoll drop: %zu boxes, %zu joints, %.1f s at %.0f Hz, 7 timed runs (median and best)\n",
+              scene.boxes.size(), scene.joints.size(), double(scene.simulatedSeconds),
+              double(1.0f / defaults.timeStep));
+  std::printf(
+      "configuration,substeps,solves,us_per_step,real_time_factor,best_us_per_step,wall_us_per_step,"
+      "peak_ground_penetration_mm,peak_joint_separation_mm,final_pelvis_height_m,healthy\n");
+  const DropReport reports[] = {RunConfiguration("default_sequential_joints", defaults, scene),
+                                RunConfiguration("fast_direct_joints", scenes::FastDropSettings(), scene)};
+  bool healthy = true;
+  for (const DropReport& report : reports) {
+    std::fputs(report.row.c_str(), stdout);
+    healthy = healthy && report.healthy;
+  }
+  for (const DropReport& report : reports) std::fputs(report.finalState.c_str(), stdout);
   return healthy ? 0 : 1;
 }

@@ -102,6 +102,14 @@ static const float kPikeComRatio = getenv("PIKE") ? atof(getenv("PIKE")) : 0.62f
 constexpr float kFootStep = 0.3f;          // m
 constexpr float kFootLead = 0.1f;          // m
 constexpr float kMinFootStep = 0.06f;      // m: a reachable step shorter than this ends the walk-in
+// The roll (RiseController::RollAngle: 0 on the back, pi on the front): the far
+// foot pushes until the pelvis has turned this far, or has pushed off once
+// the pelvis is past kLiftOffRoll; the chest past kChestOverRoll has led over
+// and the legs straighten; both past kProneRoll lie prone.
+constexpr float kLiftOffRoll = glm::radians(30.0f);
+constexpr float kPushedRoll = glm::radians(60.0f);
+constexpr float kChestOverRoll = glm::radians(125.0f);
+constexpr float kProneRoll = glm::radians(135.0f);
 
 // On hands and feet: where the plan is quasi-static and the CoM is held by feedback.
 bool OnHandsAndFeet(RisePhase phase) { return phase == RisePhase::kPush || phase == RisePhase::kCrawl; }
@@ -499,6 +507,21 @@ void RiseController::EvaluateLimb(const LimbMove& limb, Limb which, float s, con
       out.endRotation = glm::normalize(frame * rotation);
       break;
     }
+    case LimbMode::kJoint: {
+      // Forward kinematics of the interpolated angles, which the IK turns back
+      // into the same angles: a swing along the joints' arcs, never through the root.
+      const int i = static_cast<int>(which);
+      const glm::vec3 angles = glm::mix(limb.from, limb.to, u);
+      const glm::quat frame = IsArm(which) ? trunkGoal.chestRotation : trunkGoal.pelvisRotation;
+      const glm::quat upper = frame * glm::angleAxis(angles.x, rig_.rootDofs[i][0].axis) *
+                              glm::angleAxis(angles.y, rig_.rootDofs[i][1].axis);
+      const glm::quat lower = upper * glm::angleAxis(angles.z, rig_.hinge[i].axis);
+      out.target = LimbRoot(def_.skeleton, rig_, trunkGoal, which) +
+                   upper * def_.skeleton.joints[rig_.lower[i]].restOffset +
+                   lower * def_.skeleton.joints[rig_.end[i]].restOffset;
+      out.endRotation = glm::normalize(lower * rotation);
+      break;
+    }
   }
 }
 
@@ -631,10 +654,14 @@ void RiseController::StartMove(Move move) {
   // However fast the style, a hand or foot crossing the world goes no faster
   // on average than kMaxLimbSpeed (the eased path peaks at about twice that):
   // a quick style on a long step otherwise whipped limbs past 10 m/s.
-  for (const LimbMove& limb : move.limbs) {
+  for (int i = 0; i < kLimbCount; ++i) {
+    const LimbMove& limb = move.limbs[i];
     if (limb.mode == LimbMode::kToePivot) continue;
-    // (For a limb carried by the trunk, its path relative to the trunk.)
-    const float path = glm::length(limb.to - limb.from) + 2.0f * limb.lift;
+    // (For a limb carried by the trunk, its path relative to the trunk; for one
+    // turned in its joints, the arc its end sweeps at full reach.)
+    const float path = limb.mode == LimbMode::kJoint
+                           ? glm::length(limb.to - limb.from) * (IsArm(static_cast<Limb>(i)) ? armReach_ : legReach_)
+                           : glm::length(limb.to - limb.from) + 2.0f * limb.lift;
     move.duration = std::max(move.duration, static_cast<double>(path / (kMaxLimbSpeed * std::max(limb.span, 0.1f))));
   }
   move_ = std::move(move);
@@ -682,79 +709,147 @@ void RiseController::PlanNext(const BodyReading& reading) {
   }
 }
 
+float RiseController::RollAngle(const glm::quat& segment) const {
+  const glm::vec3 front = segment * glm::vec3(0, 0, 1);
+  const glm::vec3 side = rollSign_ * (segment * glm::vec3(1, 0, 0));
+  return std::atan2(-glm::dot(side, ground_.normal), glm::dot(front, ground_.normal));
+}
+
+RiseController::LimbMove RiseController::RollLimb(const BodyReading& r, Limb limb,
+                                                  const std::array<float, 5>& anglesDeg) const {
+  const int i = static_cast<int>(limb);
+  const std::vector<glm::quat> local = LocalRotations(def_.skeleton, r.jointRotations);
+  float root[3] = {}, hinge[3] = {};
+  def_.JointAngles(rig_.upper[i], local[rig_.upper[i]], root);
+  def_.JointAngles(rig_.lower[i], local[rig_.lower[i]], hinge);
+  LimbMove m;
+  m.mode = LimbMode::kJoint;
+  m.from = glm::radians(glm::vec3(root[0], root[1], hinge[0]));
+  m.to = glm::radians(glm::vec3(anglesDeg[0], anglesDeg[1], anglesDeg[2]));
+  m.fromRotation = local[rig_.end[i]];
+  m.toRotation = def_.JointRotation(rig_.end[i], &anglesDeg[3]);
+  return m;
+}
+
+RiseController::TrunkPose RiseController::RolledTrunk(const BodyReading& r, float angle, float twist) const {
+  const TrunkPose measured = MeasuredTrunk(r);
+  const glm::quat pelvis = measured.pelvisRotation;
+  const BoneBox& box = def_.skeleton.joints[rig_.pelvis].box;
+  // On the back the trunk turns over the back edge of the roll side, past the
+  // side over its front edge.
+  const float frontOrBack = RollAngle(pelvis) < 0.5f * kPi ? -1.0f : 1.0f;
+  const glm::vec3 pivot = measured.pelvis + pelvis * (box.center + glm::vec3(rollSign_ * box.halfExtents.x, 0.0f,
+                                                                             frontOrBack * box.halfExtents.z));
+  const glm::quat turn = glm::angleAxis(rollSign_ * angle, pelvis * kUp);
+  TrunkPose rolled;
+  rolled.pelvis = pivot + turn * (measured.pelvis - pivot);
+  rolled.pelvisRotation = glm::normalize(turn * pelvis);
+  rolled.chestRotation = glm::normalize(rolled.pelvisRotation * glm::angleAxis(rollSign_ * twist, kUp));
+  return rolled;
+}
+
 RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   const glm::quat chest = r.jointRotations[rig_.chest];
-  const glm::vec3 face = chest * glm::vec3(0, 0, 1);
+  const glm::quat pelvis = r.jointRotations[rig_.pelvis];
   // Crouched on both feet with the CoM over them: Phase 2 directly.
   if (OnItsFeet(r)) return PlanRise(r);
+  // From rest (the start, or after a fall) a roll starts afresh.
+  if (phase_ == RisePhase::kSettle) rollSign_ = 0.0f, rollStage_ = RollStage::kNone;
+  const glm::vec3 face = chest * glm::vec3(0, 0, 1);
   // Face down already: Phase 0 goes straight to placing hands and feet.
-  if (glm::dot(face, ground_.normal) < -0.7f) return PlanPlace(r);
+  if (rollSign_ == 0.0f && glm::dot(face, ground_.normal) < -0.7f) return PlanPlace(r);
+  if (rollSign_ == 0.0f) {
+    // Roll over the side that is already down; flat on the back, the seed picks.
+    const float leftDown = -glm::dot(chest * glm::vec3(1, 0, 0), ground_.normal);
+    rollSign_ = std::fabs(leftDown) > 0.3f ? (leftDown > 0.0f ? 1.0f : -1.0f) : ((rng_() & 1u) ? 1.0f : -1.0f);
+  }
+  const float pelvisRoll = RollAngle(pelvis), chestRoll = RollAngle(chest);
+  const bool prone = std::min(pelvisRoll, chestRoll) > kProneRoll;
+  // Lying on the front with the legs straightened: the prone path takes over.
+  if (rollStage_ == RollStage::kLie && prone) return PlanPlace(r);
 
-  const glm::vec3 forward = HeadingForward(r);
-  const glm::vec3 left = glm::normalize(glm::cross(kUp, forward));  // prone left
-  // Roll on toward the side the face already turns to; from flat on the back,
-  // the seed picks the side.
-  float sideSign = glm::dot(face, left);
-  if (std::fabs(sideSign) < 0.2f) sideSign = (rng_() & 1u) ? 1.0f : -1.0f;
-  const glm::vec3 rollSide = sideSign > 0.0f ? left : -left;
+  const Limb nearArm = rollSign_ > 0.0f ? Limb::kHandLeft : Limb::kHandRight;
+  const Limb farArm = OtherHand(nearArm);
+  const Limb nearLeg = rollSign_ > 0.0f ? Limb::kFootLeft : Limb::kFootRight;
+  const Limb farLeg = rollSign_ > 0.0f ? Limb::kFootRight : Limb::kFootLeft;
 
+  // Each move is chosen by how far the trunk has turned, so one that does not
+  // get the body as far as planned is followed by the one that fits where it is.
+  RollStage stage = RollStage::kOver;
+  if (prone || chestRoll > kChestOverRoll) stage = RollStage::kLie;
+  if (pelvisRoll < kPushedRoll) stage = rollStage_ == RollStage::kNone ? RollStage::kTuck : RollStage::kPush;
+  const bool pushedOff = pelvisRoll > kLiftOffRoll && !r.touching[static_cast<int>(farLeg)];
+  if (stage == RollStage::kPush && pushedOff) stage = RollStage::kOver;
+  rollStage_ = stage;
+
+  heading_ = HeadingForward(r);
   Move move;
   move.phase = RisePhase::kRoll;
   move.from = MeasuredTrunk(r);
-  move.to = move.from;
-  // Already on a side: no tuck, the roll carries on from there.
-  if (std::fabs(glm::dot(face, ground_.normal)) < 0.5f) rollTucked_ = true;
-  if (rollTucked_) {
-    // The body turns over toward rollSide: the planted foot and the servos
-    // drive the trunk toward face down, shifted by about its own width.
-    move.name = "roll";
-    move.duration = 1.6;
-    const float lyingHeight = Height(ground_, move.from.pelvis);
-    move.to.pelvis = Project(ground_, move.from.pelvis) + rollSide * 0.25f + ground_.normal * lyingHeight;
-    move.to.pelvisRotation = move.to.chestRotation = TrunkRotation(forward, 0.0f);
-  } else {
-    move.name = "tuck";
-    move.duration = 0.9;
-  }
-
-  for (int i = 0; i < kLimbCount; ++i) {
-    const Limb limb = static_cast<Limb>(i);
-    const int root = rig_.upper[i];
-    // Which side of the body the limb is on, seen in the world right now.
-    const bool onRollSide = glm::dot(r.jointPositions[root] - r.jointPositions[rig_.pelvis], rollSide) > 0.0f;
-    LimbMove& m = move.limbs[i];
-    if (!IsArm(limb) && !onRollSide) {
-      // The far leg is the pusher: it plants its foot beside the buttock with
-      // the knee up (tuck), then holds it there while the hip pushes the
-      // pelvis over (roll).
-      if (rollTucked_) {
-        m = HoldLimb(r, limb, true);
-      } else {
-        const glm::vec3 hip = r.jointPositions[root];
-        const glm::vec3 toe = Project(ground_, hip - forward * (0.5f * legReach_) - rollSide * 0.06f);
-        m = HoldLimb(r, limb, false);
-        m.toRotation = FootRotation(-forward, 0.0f);
-        m.to = AnkleForToe(toe, m.toRotation);
-        m.lift = static_cast<float>(spec_.style.stepHeightM);
-      }
-      continue;
+  auto set = [&](Limb limb, const LimbMove& m) { move.limbs[static_cast<int>(limb)] = m; };
+  // The arm on the roll side goes overhead so the body rolls over the
+  // shoulder instead of onto the arm.
+  set(nearArm, RollLimb(r, nearArm, {165, 15, 10, 0, 0}));
+  set(nearLeg, RollLimb(r, nearLeg, {5, 0, 5, -20, 0}));
+  switch (stage) {
+    case RollStage::kTuck: {
+      // The far knee comes up and its foot is set flat beside the buttock and
+      // out to the side, where pushing on it lifts that hip up and over; the
+      // near arm is on its way overhead.
+      move.name = "tuck";
+      move.duration = 0.6;
+      move.to = move.from;
+      const glm::vec3 hip = r.jointPositions[rig_.upper[static_cast<int>(farLeg)]];
+      const glm::vec3 farSide = SafeNormalize(Horizontal(pelvis * glm::vec3(-rollSign_, 0.0f, 0.0f)), glm::vec3(0));
+      const glm::vec3 toe = Project(ground_, hip - heading_ * (0.5f * legReach_) + farSide * (0.25f * legReach_));
+      LimbMove foot = HoldLimb(r, farLeg, false);
+      foot.toRotation = FootRotation(-heading_, 0.0f);
+      foot.to = AnkleForToe(toe, foot.toRotation);
+      foot.lift = static_cast<float>(spec_.style.stepHeightM);
+      set(farLeg, foot);
+      set(nearArm, RollLimb(r, nearArm, {90, 20, 10, 0, 0}));
+      set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
+      break;
     }
-    m.mode = LimbMode::kBody;
-    const glm::quat frame = IsArm(limb) ? r.jointRotations[rig_.chest] : r.jointRotations[rig_.pelvis];
-    m.from = glm::inverse(frame) * (r.jointPositions[rig_.end[i]] - r.jointPositions[root]);
-    m.fromRotation = glm::inverse(frame) * r.jointRotations[rig_.end[i]];
-    m.toRotation = glm::quat(1, 0, 0, 0);
-    if (IsArm(limb)) {
-      // The arm on the roll side goes overhead so the body rolls over the
-      // shoulder; the other reaches across the chest and pulls the body over.
-      m.to = onRollSide ? glm::vec3(0.0f, 0.92f * armReach_, 0.1f) : glm::vec3(0.0f, 0.15f, 0.85f) * armReach_;
-      m.span = 0.6f;
-    } else {
-      m.to = glm::vec3(0.0f, -0.98f * legReach_, 0.0f);
+    case RollStage::kPush:
+      // The planted far foot holds its place while the trunk's goal turns on
+      // over the near edge of the back: the leg's servos push the hip over.
+      // (Less than half a turn per move: the goal is reached by slerp, which
+      // would take the other way round.)
+      move.name = "push off";
+      move.duration = 0.8;
+      move.to = RolledTrunk(r, glm::radians(140.0f) - pelvisRoll, 0.0f);
+      move.rolledTo = kPushedRoll;
+      set(farLeg, HoldLimb(r, farLeg, true));
+      set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
+      break;
+    case RollStage::kOver: {
+      // Past the side: the chest leads over onto the front, the top hand comes
+      // down beside the head. A foot still planted from the push holds the
+      // pelvis from falling back, so the chest can lead by the spine's full twist.
+      move.name = "over";
+      move.duration = 0.9;
+      const bool pushing = planted_[static_cast<int>(farLeg)];
+      move.to = RolledTrunk(r, 0.0f, glm::radians(pushing ? 65.0f : 30.0f));
+      set(farArm, RollLimb(r, farArm, {45, 45, 90, 0, 0}));
+      set(farLeg, pushing ? HoldLimb(r, farLeg, true) : RollLimb(r, farLeg, {40, -10, 60, -20, 0}));
+      break;
     }
+    case RollStage::kLie:
+    case RollStage::kNone:
+      // The legs straighten and the spine untwists: straightening the top leg
+      // turns the pelvis after the chest onto the front, as a body lying prone.
+      // The arm overhead swings out along the ground, nearer to where the
+      // hands are placed next.
+      move.name = "lie";
+      move.duration = 0.6;
+      move.to = RolledTrunk(r, 0.0f, 0.0f);
+      set(farArm, RollLimb(r, farArm, {20, 20, 60, 0, 0}));
+      set(nearArm, RollLimb(r, nearArm, {165, 60, 10, 0, 0}));
+      set(nearLeg, RollLimb(r, nearLeg, {0, 0, 5, -50, 0}));
+      set(farLeg, RollLimb(r, farLeg, {0, 0, 5, -50, 0}));
+      break;
   }
-  rollTucked_ = !rollTucked_;
-  heading_ = forward;
   return move;
 }
 
@@ -1475,7 +1570,10 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     // Quasi-static pace: progress slows while the pelvis lags its goal.
     const PoseGoal now = GoalAt(move_, progress_, reading);
     const float lag = glm::length(now.pelvisPosition - reading.jointPositions[rig_.pelvis]);
-    const float gate = std::clamp((kGateStop - lag) / (kGateStop - kGateError), 0.15f, 1.0f);
+    // A roll's trunk goal is only where the planted limbs push toward; how far
+    // the body has come is its roll angle (Move::rolledTo), not this lag.
+    const bool rolling = move_.phase == RisePhase::kRoll;
+    const float gate = rolling ? 1.0f : std::clamp((kGateStop - lag) / (kGateStop - kGateError), 0.15f, 1.0f);
     progress_ = std::min(1.0f, progress_ + static_cast<float>(dt / move_.duration) * gate);
     trace_.trackingError = lag;
     if (lag < kGateStop) stalledSince_ = -1.0;
@@ -1510,11 +1608,20 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
       progress_ = 1.0f;
     }
     const bool stalled = stalledSince_ >= 0.0 && reading.time - stalledSince_ > kStallTime;
-    if (stalled) {
+    // A move that turns the body over ends once it has, or once a foot
+    // pushing it leaves the ground with the hip up: that push is spent, and
+    // held on, the foot would be dragged.
+    bool rolled = false;
+    if (move_.rolledTo > 0.0f) {
+      const float turned = RollAngle(reading.jointRotations[rig_.pelvis]);
+      rolled = turned >= move_.rolledTo;
+      for (int i = 2; i < 4; ++i) rolled = rolled || (planted_[i] && !reading.touching[i] && turned > kLiftOffRoll);
+    }
+    if (stalled || rolled) {
       // The body cannot follow this move: plan again from where it is.
       stalledSince_ = -1.0;
       PlanNext(reading);
-    } else if (progress_ >= 1.0f && lag < kGateStop) {
+    } else if (progress_ >= 1.0f && (lag < kGateStop || rolling)) {
       if (phase_ == RisePhase::kStand) {
         finished_ = reading.time - standTime_ >= kStandHold && reading.maxBodySpeed < kRestSpeed;
         if (!finished_) PlanNext(reading);

@@ -87,10 +87,14 @@ class RiseController {
     glm::quat pelvisRotation{1.0f, 0.0f, 0.0f, 0.0f};
     glm::quat chestRotation{1.0f, 0.0f, 0.0f, 0.0f};
   };
-  enum class LimbMode { kWorld, kToePivot, kBody };
+  enum class LimbMode { kWorld, kToePivot, kBody, kJoint };
+  // The roll's moves, in order (see PlanRoll).
+  enum class RollStage { kNone, kTuck, kPush, kOver, kLie };
   struct LimbMove {
     LimbMode mode = LimbMode::kWorld;
-    glm::vec3 from{0.0f}, to{0.0f};  // wrist/ankle (kWorld), toe point (kToePivot), or in the trunk frame (kBody)
+    // wrist/ankle (kWorld), toe point (kToePivot), in the trunk frame (kBody), or the
+    // root's two angles and the hinge angle, rad (kJoint; its rotations are the end's local ones)
+    glm::vec3 from{0.0f}, to{0.0f};
     glm::quat fromRotation{1.0f, 0.0f, 0.0f, 0.0f}, toRotation{1.0f, 0.0f, 0.0f, 0.0f};
     float lift = 0.0f;               // swing height; 0 keeps the path straight
     float delay = 0.0f, span = 1.0f; // fraction of the move over which the limb travels
@@ -107,11 +111,22 @@ class RiseController {
     bool kneeling = false;            // the knees rest on the ground: planned there, and supports
     int landing = -1;                 // a limb being put down: the move ends when it touches
     float landingAfter = 0.0f;        // ... once progress is past this (a step lifts off first)
+    float rolledTo = 0.0f;            // rolling: the move ends once the pelvis has turned this far (RollAngle), rad
   };
 
   // Planning (each returns the next move from the measured state).
   void PlanNext(const BodyReading& reading);
   Move PlanRoll(const BodyReading& reading);
+  // How far a trunk segment has turned from lying on its back toward lying on
+  // its front about its own long axis, rolling toward rollSign_'s side: 0 on the
+  // back, pi/2 on that side, pi on the front.
+  float RollAngle(const glm::quat& segment) const;
+  // A limb of a roll pose, set by its joints' angles in degrees (the root's two,
+  // the hinge's, the end's two), so it swings along the joints' own arcs.
+  LimbMove RollLimb(const BodyReading& reading, Limb limb, const std::array<float, 5>& anglesDeg) const;
+  // The measured trunk turned on by `angle` about its long axis toward the roll
+  // side, pivoting on the edge it rolls over, the chest turned `twist` further.
+  TrunkPose RolledTrunk(const BodyReading& reading, float angle, float twist) const;
   Move PlanPlace(const BodyReading& reading);
   Move PlanPush(const BodyReading& reading);
   Move PlanCrawl(const BodyReading& reading);
@@ -230,7 +245,8 @@ class RiseController {
   // Where each limb's last step was to land: a swing the servos leave short
   // is finished by putting the limb down there, not where it hangs.
   std::array<std::optional<glm::vec3>, kLimbCount> stepSpot_{};
-  bool rollTucked_ = false;
+  float rollSign_ = 0.0f;                   // +1 rolling onto the left side, -1 onto the right; 0 before the roll
+  RollStage rollStage_ = RollStage::kNone;  // the roll's last move
   glm::vec3 heading_{0.0f, 0.0f, 1.0f};
   glm::vec3 balanceOffset_{0.0f};
   float balanceLean_ = 0.0f;

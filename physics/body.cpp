@@ -66,6 +66,8 @@ void UpdateWorldInertia(Body& body) {
   body.invInertiaWorld = scaled * glm::transpose(r);
 }
 
+namespace {
+
 void IntegrateVelocity(Body& body, const glm::vec3& gravity, float h) {
   body.linearVelocity += h * (gravity + body.invMass * body.force);
   // Most bodies carry no applied torque (joint motors act through constraints).
@@ -99,7 +101,19 @@ void IntegratePosition(Body& body, float h) {
   const glm::quat q = body.transform.rotation;
   const glm::quat dq = glm::quat(0.0f, w.x, w.y, w.z) * q;
   body.transform.rotation = glm::normalize(q + (0.5f * h) * dq);
-  UpdateWorldInertia(body);
+}
+
+}  // namespace
+
+void IntegrateVelocities(std::vector<Body>& bodies, const glm::vec3& gravity, float h) {
+  for (Body& body : bodies) IntegrateVelocity(body, gravity, h);
+}
+
+void IntegratePositions(std::vector<Body>& bodies, float h) {
+  for (Body& body : bodies) IntegratePosition(body, h);
+  // A loop of its own: each body's normalisation and inertia update form one long dependent chain
+  // (square root, division, rotation matrix, product), and apart they overlap across bodies.
+  for (Body& body : bodies) UpdateWorldInertia(body);
 }
 
 }  // namespace rise::physics

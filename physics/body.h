@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <vector>
 
 namespace rise::physics {
 
@@ -79,12 +80,12 @@ Body MakeBody(const BodyDef& def);
 // Recomputes invInertiaWorld from the current rotation.
 void UpdateWorldInertia(Body& body);
 
-// Semi-implicit Euler velocity update over h seconds: gravity, the accumulated force and torque,
-// damping, and the gyroscopic term solved implicitly (see body.cpp).
-void IntegrateVelocity(Body& body, const glm::vec3& gravity, float h);
+// Semi-implicit Euler velocity update of every body over h seconds: gravity, the accumulated
+// force and torque, damping, and the gyroscopic term solved implicitly (see body.cpp).
+void IntegrateVelocities(std::vector<Body>& bodies, const glm::vec3& gravity, float h);
 
-// Position and orientation update over h seconds with the new velocities; the quaternion is
-// renormalised so rounding never makes it drift away from a rotation.
-void IntegratePosition(Body& body, float h);
+// Position and orientation update of every body over h seconds with the new velocities; the
+// quaternions are renormalised so rounding never makes them drift away from a rotation.
+void IntegratePositions(std::vector<Body>& bodies, float h);
 
 }  // namespace rise::physics

@@ -46,29 +46,8 @@ constexpr float kAbsTolerance = 0.5e-3f;  // metres
 constexpr uint32_t kIdReferenceIsB = 1u << 12;
 constexpr uint32_t kIdEdgeEdge = 1u << 13;
 
-struct OrientedBox {
-  glm::vec3 center;
-  glm::mat3 axes;  // columns are the box axes in world space
-  glm::vec3 half;
-};
-
-OrientedBox MakeBox(const BoxShape& shape, const Transform& transform) {
-  RISE_ASSERT(shape.halfExtents.x > 0.0f && shape.halfExtents.y > 0.0f && shape.halfExtents.z > 0.0f);
-  // A non-unit quaternion would scale the axes and every distance measured along them.
-  RISE_ASSERT(std::fabs(glm::dot(transform.rotation, transform.rotation) - 1.0f) < 1e-3f);
-  return {transform.position, glm::mat3_cast(transform.rotation), shape.halfExtents};
-}
-
 float SignOf(float x) {
   return x < 0.0f ? -1.0f : 1.0f;
-}
-
-glm::vec3 Vertex(const OrientedBox& box, int v) {
-  glm::vec3 p = box.center;
-  for (int k = 0; k < 3; ++k) {
-    p += box.axes[k] * ((v >> k & 1) ? box.half[k] : -box.half[k]);
-  }
-  return p;
 }
 
 // A point under construction: where it is and which box features made it.
@@ -306,17 +285,34 @@ void ClosestPointsOfSegments(const glm::vec3& centerA, const glm::vec3& dirA, fl
 
 }  // namespace
 
-Manifold CollidePlaneBox(const PlaneShape& plane, const BoxShape& box, const Transform& boxTransform,
-                         float speculativeDistance) {
+OrientedBox MakeOrientedBox(const BoxShape& box, const Transform& transform) {
+  RISE_ASSERT(box.halfExtents.x > 0.0f && box.halfExtents.y > 0.0f && box.halfExtents.z > 0.0f);
+  // A non-unit quaternion would scale the axes and every distance measured along them.
+  RISE_ASSERT(std::fabs(glm::dot(transform.rotation, transform.rotation) - 1.0f) < 1e-3f);
+  return {transform.position, glm::mat3_cast(transform.rotation), box.halfExtents};
+}
+
+Manifold CollidePlaneBox(const PlaneShape& plane, const OrientedBox& b, float speculativeDistance) {
   RISE_ASSERT(std::fabs(glm::dot(plane.normal, plane.normal) - 1.0f) < 1e-3f);
-  const OrientedBox b = MakeBox(box, boxTransform);
   Manifold manifold;
   manifold.normal = plane.normal;
 
+  // Vertex v is ((center +- halfAxis[0]) +- halfAxis[1]) +- halfAxis[2], bit k of v choosing the
+  // sign; the vertices share their partial sums.
+  const glm::vec3 halfAxis[3] = {b.axes[0] * b.half[0], b.axes[1] * b.half[1], b.axes[2] * b.half[2]};
+  glm::vec3 vertices[8];
+  for (int x = 0; x < 2; ++x) {
+    const glm::vec3 px = x ? b.center + halfAxis[0] : b.center - halfAxis[0];
+    for (int y = 0; y < 2; ++y) {
+      const glm::vec3 pxy = y ? px + halfAxis[1] : px - halfAxis[1];
+      vertices[x | y << 1] = pxy - halfAxis[2];
+      vertices[x | y << 1 | 4] = pxy + halfAxis[2];
+    }
+  }
   Candidate candidates[8];
   int count = 0;
   for (int v = 0; v < 8; ++v) {
-    const glm::vec3 p = Vertex(b, v);
+    const glm::vec3& p = vertices[v];
     const float separation = glm::dot(plane.normal, p) - plane.offset;
     if (separation < speculativeDistance) {
       candidates[count++] = {p - plane.normal * (0.5f * separation), separation, static_cast<uint32_t>(v)};
@@ -326,10 +322,17 @@ Manifold CollidePlaneBox(const PlaneShape& plane, const BoxShape& box, const Tra
   return manifold;
 }
 
+Manifold CollidePlaneBox(const PlaneShape& plane, const BoxShape& box, const Transform& boxTransform,
+                         float speculativeDistance) {
+  return CollidePlaneBox(plane, MakeOrientedBox(box, boxTransform), speculativeDistance);
+}
+
 Manifold CollideBoxes(const BoxShape& boxA, const Transform& transformA, const BoxShape& boxB,
                       const Transform& transformB, float speculativeDistance) {
-  const OrientedBox a = MakeBox(boxA, transformA);
-  const OrientedBox b = MakeBox(boxB, transformB);
+  return CollideBoxes(MakeOrientedBox(boxA, transformA), MakeOrientedBox(boxB, transformB), speculativeDistance);
+}
+
+Manifold CollideBoxes(const OrientedBox& a, const OrientedBox& b, float speculativeDistance) {
   Manifold manifold;
   const glm::vec3 d = b.center - a.center;
 

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -49,7 +50,18 @@ struct Manifold {
   int pointCount = 0;
 };
 
+// A box as the narrow phase measures it. The Collide stage builds one per body per step and
+// hands it to every test of that body, so the rotation matrix is computed once, not per pair.
+struct OrientedBox {
+  glm::vec3 center{0.0f};
+  glm::mat3 axes{1.0f};  // columns are the box axes in world space
+  glm::vec3 half{0.5f};
+};
+
+OrientedBox MakeOrientedBox(const BoxShape& box, const Transform& transform);
+
 // A = the static plane, B = the box; the normal is the plane normal.
+Manifold CollidePlaneBox(const PlaneShape& plane, const OrientedBox& box, float speculativeDistance);
 Manifold CollidePlaneBox(const PlaneShape& plane, const BoxShape& box, const Transform& boxTransform,
                          float speculativeDistance);
 
@@ -57,6 +69,7 @@ Manifold CollidePlaneBox(const PlaneShape& plane, const BoxShape& box, const Tra
 // against the reference face's side planes (Sutherland-Hodgman), reduced to at
 // most four points that keep the deepest point and the widest area; edge-edge
 // contacts give one point.
+Manifold CollideBoxes(const OrientedBox& a, const OrientedBox& b, float speculativeDistance);
 Manifold CollideBoxes(const BoxShape& boxA, const Transform& transformA, const BoxShape& boxB,
                       const Transform& transformB, float speculativeDistance);
 

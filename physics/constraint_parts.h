@@ -138,10 +138,11 @@ inline void SolveAngularEquality(Body& a, Body& b, const glm::vec3& axis, float 
   ApplyAngularImpulse(a, b, impulse * axis);
 }
 
-// Angular inequality row: C = position >= 0 along axis, impulse >= 0. Always active: while the
-// limit is not reached the bias C/h lets the bodies close the gap in this sub-step but no further
-// (speculative, like contacts), so a fast limb cannot jump past its limit.
-inline void SolveAngularLimit(Body& a, Body& b, const glm::vec3& axis, float mass, float position,
+// Angular inequality row: C = position >= 0 along axis, impulse >= 0, with cdot = axis . (wB - wA)
+// measured by the caller. Always active: while the limit is not reached the bias C/h lets the
+// bodies close the gap in this sub-step but no further (speculative, like contacts), so a fast limb
+// cannot jump past its limit. Returns whether it changed the velocities.
+inline bool SolveAngularLimit(Body& a, Body& b, const glm::vec3& axis, float cdot, float mass, float position,
                               float& accumulated, const SolverContext& context, bool useBias) {
   float bias = 0.0f;
   Softness soft = kRigid;
@@ -151,13 +152,26 @@ inline void SolveAngularLimit(Body& a, Body& b, const glm::vec3& axis, float mas
     soft = context.jointSoftness;
     bias = soft.biasRate * position;
   }
-  const float cdot = glm::dot(axis, b.angularVelocity - a.angularVelocity);
   // An idle row that would only pull is clamped to zero anyway.
-  if (accumulated == 0.0f && cdot + bias >= 0.0f) return;
+  if (accumulated == 0.0f && cdot + bias >= 0.0f) return false;
   const float impulse = -soft.massScale * mass * (cdot + bias) - soft.impulseScale * accumulated;
   const float newAccumulated = std::max(accumulated + impulse, 0.0f);
   ApplyAngularImpulse(a, b, (newAccumulated - accumulated) * axis);
   accumulated = newAccumulated;
+  return true;
+}
+
+// Both rows of a limited angle: lower <= angle <= upper about axis. The upper row is the lower
+// one with the axis reversed, so while the lower row leaves the velocities alone its Cdot is the
+// negated lower one (negation is exact in floating point) and is not measured twice.
+inline void SolveAngularRange(Body& a, Body& b, const glm::vec3& axis, float mass, float angle, float lower,
+                              float upper, float& lowerAccumulated, float& upperAccumulated,
+                              const SolverContext& context, bool useBias) {
+  float cdot = glm::dot(axis, b.angularVelocity - a.angularVelocity);
+  if (SolveAngularLimit(a, b, axis, cdot, mass, angle - lower, lowerAccumulated, context, useBias)) {
+    cdot = glm::dot(axis, b.angularVelocity - a.angularVelocity);
+  }
+  SolveAngularLimit(a, b, -axis, -cdot, mass, upper - angle, upperAccumulated, context, useBias);
 }
 
 // Gains of a PD motor for one sub-step (see the header comment).

@@ -19,11 +19,11 @@ namespace {
 
 constexpr uint64_t kBodyPairFlag = uint64_t{1} << 63;
 
-Aabb BoxAabb(const BoxShape& box, const Transform& transform, float margin) {
-  const glm::mat3 r = glm::mat3_cast(transform.rotation);
-  const glm::vec3 h = box.halfExtents;
+Aabb BoxAabb(const OrientedBox& box, float margin) {
+  const glm::mat3& r = box.axes;
+  const glm::vec3 h = box.half;
   const glm::vec3 extent = glm::abs(r[0]) * h.x + glm::abs(r[1]) * h.y + glm::abs(r[2]) * h.z + glm::vec3(margin);
-  return Aabb{transform.position - extent, transform.position + extent};
+  return Aabb{box.center - extent, box.center + extent};
 }
 
 bool Overlap(const Aabb& a, const Aabb& b) {
@@ -36,25 +36,39 @@ bool FiltersPass(uint32_t categoryA, uint32_t maskA, uint32_t categoryB, uint32_
 }
 
 // The plane's half space test for the box's deepest corner, before building a manifold.
-bool NearPlane(const PlaneShape& plane, const Body& body, float margin) {
-  const glm::mat3 r = glm::mat3_cast(body.transform.rotation);
-  const glm::vec3 h = body.box.halfExtents;
+bool NearPlane(const PlaneShape& plane, const OrientedBox& box, float margin) {
+  const glm::mat3& r = box.axes;
+  const glm::vec3 h = box.half;
   const float radius = std::fabs(glm::dot(plane.normal, r[0])) * h.x + std::fabs(glm::dot(plane.normal, r[1])) * h.y +
                        std::fabs(glm::dot(plane.normal, r[2])) * h.z;
-  return glm::dot(plane.normal, body.transform.position) - plane.offset - radius < margin;
+  return glm::dot(plane.normal, box.center) - plane.offset - radius < margin;
 }
 
-void TangentBasis(const glm::vec3& n, glm::vec3& t1, glm::vec3& t2) {
-  // A fixed function of the normal, so a resting contact keeps its friction axes across steps.
-  t1 = std::fabs(n.x) >= 0.57735f ? glm::vec3(n.y, -n.x, 0.0f) : glm::vec3(0.0f, n.z, -n.y);
-  t1 = glm::normalize(t1);
-  t2 = glm::cross(n, t1);
+struct TangentBasis {
+  glm::vec3 t1, t2;
+};
+
+// A fixed function of the normal, so a resting contact keeps its friction axes across steps.
+TangentBasis MakeTangentBasis(const glm::vec3& n) {
+  TangentBasis basis;
+  basis.t1 = std::fabs(n.x) >= 0.57735f ? glm::vec3(n.y, -n.x, 0.0f) : glm::vec3(0.0f, n.z, -n.y);
+  basis.t1 = glm::normalize(basis.t1);
+  basis.t2 = glm::cross(n, basis.t1);
+  return basis;
 }
 
-// `contact` is freshly value-initialised (emplace_back), so its points' impulses start at zero.
-void InitContact(Contact& contact, const Manifold& manifold) {
+// `contact` may hold a contact of an earlier step (Collide reuses the storage), so every field
+// the solver reads is set here; the row data is PrepareContacts' to fill.
+void InitContact(Contact& contact, uint64_t key, int32_t bodyA, int32_t bodyB, int32_t staticShape, float friction,
+                 const Manifold& manifold, const TangentBasis& tangents) {
+  contact.key = key;
+  contact.bodyA = bodyA;
+  contact.bodyB = bodyB;
+  contact.staticShape = staticShape;
+  contact.friction = friction;
   contact.normal = manifold.normal;
-  TangentBasis(manifold.normal, contact.tangent[0], contact.tangent[1]);
+  contact.tangent[0] = tangents.t1;
+  contact.tangent[1] = tangents.t2;
   contact.pointCount = manifold.pointCount;
   for (int i = 0; i < manifold.pointCount; ++i) {
     const ManifoldPoint& mp = manifold.points[i];
@@ -62,6 +76,8 @@ void InitContact(Contact& contact, const Manifold& manifold) {
     cp.point = mp.point;
     cp.separation = mp.separation;
     cp.id = mp.id;
+    cp.normalImpulse = 0.0f;
+    cp.tangentImpulse[0] = cp.tangentImpulse[1] = 0.0f;
   }
 }
 
@@ -81,22 +97,22 @@ void CopyMatchingImpulses(Contact& fresh, const Contact& old, float maxDistanceS
   }
 }
 
-Manifold CollideStatic(const StaticShape& shape, const Body& body, float speculativeDistance) {
+Manifold CollideStatic(const StaticShape& shape, const OrientedBox& box, float speculativeDistance) {
   switch (shape.type) {
     case StaticShapeType::kPlane:
-      return CollidePlaneBox(shape.plane, body.box, body.transform, speculativeDistance);
+      return CollidePlaneBox(shape.plane, box, speculativeDistance);
     case StaticShapeType::kBox:
-      return CollideBoxes(shape.box, shape.transform, body.box, body.transform, speculativeDistance);
+      return CollideBoxes(MakeOrientedBox(shape.box, shape.transform), box, speculativeDistance);
   }
   return Manifold{};
 }
 
-bool StaticNear(const StaticShape& shape, const Body& body, const Aabb& bodyBox, float margin) {
+bool StaticNear(const StaticShape& shape, const OrientedBox& box, const Aabb& bodyBounds, float margin) {
   switch (shape.type) {
     case StaticShapeType::kPlane:
-      return NearPlane(shape.plane, body, margin);
+      return NearPlane(shape.plane, box, margin);
     case StaticShapeType::kBox:
-      return Overlap(BoxAabb(shape.box, shape.transform, 0.0f), bodyBox);
+      return Overlap(BoxAabb(MakeOrientedBox(shape.box, shape.transform), 0.0f), bodyBounds);
   }
   return false;
 }
@@ -113,50 +129,58 @@ void Collide(const std::vector<Body>& bodies, const std::vector<StaticShape>& st
              const std::vector<uint64_t>& joinedPairs, const WorldSettings& settings, std::vector<Contact>& contacts,
              CollideScratch& scratch) {
   const float margin = settings.speculativeDistance;
+  // Last step's `fresh` storage is overwritten in place: a new Contact is value-initialised, all
+  // 800 bytes of it, which cost more than the narrow phase of a resting box.
   std::vector<Contact>& fresh = scratch.contacts;
-  fresh.clear();
+  size_t freshCount = 0;
+  auto addContact = [&fresh, &freshCount]() -> Contact& {
+    if (freshCount == fresh.size()) fresh.emplace_back();
+    return fresh[freshCount++];
+  };
 
   const int bodyCount = int(bodies.size());
+  std::vector<OrientedBox>& boxes = scratch.bodyBoxes;
   std::vector<Aabb>& bounds = scratch.bodyBounds;
+  boxes.resize(bodies.size());
   bounds.resize(bodies.size());
-  for (int b = 0; b < bodyCount; ++b) bounds[b] = BoxAabb(bodies[b].box, bodies[b].transform, 0.5f * margin);
+  for (int b = 0; b < bodyCount; ++b) {
+    boxes[b] = MakeOrientedBox(bodies[b].box, bodies[b].transform);
+    bounds[b] = BoxAabb(boxes[b], 0.5f * margin);
+  }
 
   for (int s = 0; s < int(statics.size()); ++s) {
     const StaticShape& shape = statics[s];
+    // Every manifold with a plane has the plane's normal, so its friction axes are found once.
+    const bool plane = shape.type == StaticShapeType::kPlane;
+    const TangentBasis planeTangents = plane ? MakeTangentBasis(shape.plane.normal) : TangentBasis{};
     for (int b = 0; b < bodyCount; ++b) {
       const Body& body = bodies[b];
       if (!FiltersPass(shape.categoryBits, shape.maskBits, body.categoryBits, body.maskBits)) continue;
-      if (!StaticNear(shape, body, bounds[b], margin)) continue;
-      const Manifold manifold = CollideStatic(shape, body, margin);
+      if (!StaticNear(shape, boxes[b], bounds[b], margin)) continue;
+      const Manifold manifold = CollideStatic(shape, boxes[b], margin);
       if (manifold.pointCount == 0) continue;
-      Contact& contact = fresh.emplace_back();
-      contact.key = (uint64_t(uint32_t(s)) << 31) | uint64_t(uint32_t(b));
-      contact.bodyA = -1;
-      contact.bodyB = b;
-      contact.staticShape = s;
-      contact.friction = MixFriction(shape.friction, body.friction);
-      InitContact(contact, manifold);
+      InitContact(addContact(), (uint64_t(uint32_t(s)) << 31) | uint64_t(uint32_t(b)), -1, b, s,
+                  MixFriction(shape.friction, body.friction), manifold,
+                  plane ? planeTangents : MakeTangentBasis(manifold.normal));
     }
   }
 
   for (int i = 0; i < bodyCount; ++i) {
     for (int j = i + 1; j < bodyCount; ++j) {
+      // The bounds reject most pairs on their first axis; the filter passes nearly every pair.
+      if (!Overlap(bounds[i], bounds[j])) continue;
       const Body& a = bodies[i];
       const Body& b = bodies[j];
       if (!FiltersPass(a.categoryBits, a.maskBits, b.categoryBits, b.maskBits)) continue;
-      if (!Overlap(bounds[i], bounds[j])) continue;
       const uint64_t key = BodyPairKey(i, j);
       if (std::binary_search(joinedPairs.begin(), joinedPairs.end(), key)) continue;
-      const Manifold manifold = CollideBoxes(a.box, a.transform, b.box, b.transform, margin);
+      const Manifold manifold = CollideBoxes(boxes[i], boxes[j], margin);
       if (manifold.pointCount == 0) continue;
-      Contact& contact = fresh.emplace_back();
-      contact.key = key;
-      contact.bodyA = i;
-      contact.bodyB = j;
-      contact.friction = MixFriction(a.friction, b.friction);
-      InitContact(contact, manifold);
+      InitContact(addContact(), key, i, j, -1, MixFriction(a.friction, b.friction), manifold,
+                  MakeTangentBasis(manifold.normal));
     }
   }
+  fresh.resize(freshCount);
 
   if (settings.enableWarmStarting) {
     const float maxDistanceSquared = settings.warmStartMatchDistance * settings.warmStartMatchDistance;

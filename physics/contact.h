@@ -53,6 +53,7 @@ struct Aabb {
 // Storage the Collide stage reuses from step to step, so steady-state steps do not allocate.
 struct CollideScratch {
   std::vector<Contact> contacts;
+  std::vector<OrientedBox> bodyBoxes;
   std::vector<Aabb> bodyBounds;
 };
 

@@ -23,17 +23,19 @@ namespace rise::physics {
 
 namespace {
 
-AngularRows RowsFor(const Joint& joint, const Body& a, const Body& b) {
+void UpdateRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows) {
   switch (joint.type) {
     case JointType::kBall:
-      return BallRows(joint, a, b);
+      BallRows(joint, a, b, rows);
+      return;
     case JointType::kHinge:
-      return HingeRows(joint, a, b);
+      HingeRows(joint, a, b, rows);
+      return;
     case JointType::kUniversal:
-      return UniversalRows(joint, a, b);
+      UniversalRows(joint, a, b, rows);
+      return;
   }
   RISE_ASSERT_MSG(false, "unknown joint type");
-  return {};
 }
 
 // Rotation vector (axis * angle, shortest way round) of a unit quaternion.
@@ -61,7 +63,7 @@ glm::vec3 AngularImpulse(const Joint& joint, const AngularRows& rows) {
 // The pose-only part of UpdateJointGeometry: rows, their effective masses and the lever arms.
 void UpdateJointRows(Joint& joint, const Body& a, const Body& b) {
   AngularRows& rows = joint.rows;
-  rows = RowsFor(joint, a, b);
+  UpdateRows(joint, a, b, rows);
   const glm::mat3 invInertiaSum = a.invInertiaWorld + b.invInertiaWorld;
   for (int i = 0; i < rows.lockCount; ++i) rows.lockMass[i] = AngularEffectiveMass(invInertiaSum, rows.lockAxis[i]);
   for (int i = 0; i < rows.limitCount; ++i) rows.limitMass[i] = AngularEffectiveMass(invInertiaSum, rows.limitAxis[i]);
@@ -141,10 +143,7 @@ void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b, const Solve
   UpdateMotorRows(joint, a, b, context);
 }
 
-void WarmStartJoint(Joint& joint, Body& a, Body& b) {
-  ApplyAngularImpulse(a, b, joint.angularImpulse);
-  ApplyLinearImpulse(a, b, joint.leverA, joint.leverB, joint.linearImpulse);
-}
+namespace {
 
 void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bool useBias) {
   const AngularRows& rows = joint.rows;
@@ -158,10 +157,8 @@ void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bo
   }
 
   for (int i = 0; i < rows.limitCount; ++i) {
-    SolveAngularLimit(a, b, rows.limitAxis[i], rows.limitMass[i], rows.angle[i] - rows.range[i].lower,
-                      joint.lowerImpulse[i], context, useBias);
-    SolveAngularLimit(a, b, -rows.limitAxis[i], rows.limitMass[i], rows.range[i].upper - rows.angle[i],
-                      joint.upperImpulse[i], context, useBias);
+    SolveAngularRange(a, b, rows.limitAxis[i], rows.limitMass[i], rows.angle[i], rows.range[i].lower,
+                      rows.range[i].upper, joint.lowerImpulse[i], joint.upperImpulse[i], context, useBias);
   }
 
   for (int i = 0; i < rows.lockCount; ++i) {
@@ -172,7 +169,28 @@ void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bo
   if (!joint.pointInTree) {
     SolvePointPart(a, b, joint.leverA, joint.leverB, joint.pointMass, joint.linearImpulse, context, useBias);
   }
-  joint.angularImpulse = AngularImpulse(joint, rows);
+}
+
+}  // namespace
+
+void WarmStartJoints(std::vector<Joint>& joints, std::vector<Body>& bodies, Body& staticBody) {
+  for (Joint& joint : joints) {
+    Body& a = joint.bodyA >= 0 ? bodies[joint.bodyA] : staticBody;
+    Body& b = bodies[joint.bodyB];
+    ApplyAngularImpulse(a, b, joint.angularImpulse);
+    ApplyLinearImpulse(a, b, joint.leverA, joint.leverB, joint.linearImpulse);
+  }
+}
+
+void SolveJoints(std::vector<Joint>& joints, std::vector<Body>& bodies, Body& staticBody, const SolverContext& context,
+                 bool useBias) {
+  for (Joint& joint : joints) {
+    SolveJoint(joint, joint.bodyA >= 0 ? bodies[joint.bodyA] : staticBody, bodies[joint.bodyB], context, useBias);
+  }
+}
+
+void StoreJointWarmStarts(std::vector<Joint>& joints) {
+  for (Joint& joint : joints) joint.angularImpulse = AngularImpulse(joint, joint.rows);
 }
 
 }  // namespace rise::physics

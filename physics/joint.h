@@ -27,6 +27,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace rise::physics {
 
@@ -140,12 +141,19 @@ float AnchorSeparation(const Joint& joint, const Body& a, const Body& b);
 // after every position integration.
 void PrepareJoint(Joint& joint, const Body& a, const Body& b, const SolverContext& context);
 void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b, const SolverContext& context);
-void WarmStartJoint(Joint& joint, Body& a, Body& b);
-void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bool useBias);
+// The per-pass stages run over all joints in creation order (one call, so the per-joint work is
+// inlined into the loop); `staticBody` stands in for body A of joints to the world.
+void WarmStartJoints(std::vector<Joint>& joints, std::vector<Body>& bodies, Body& staticBody);
+void SolveJoints(std::vector<Joint>& joints, std::vector<Body>& bodies, Body& staticBody, const SolverContext& context,
+                 bool useBias);
+// Sums the angular rows' impulses at the present rows into angularImpulse, which the next warm
+// start applies. Only its value after a sub-step's last pass is read, so the solver calls it there.
+void StoreJointWarmStarts(std::vector<Joint>& joints);
 
-// Per-type geometry (joint_ball.cpp, joint_hinge.cpp, joint_universal.cpp).
-AngularRows BallRows(const Joint& joint, const Body& a, const Body& b);
-AngularRows HingeRows(const Joint& joint, const Body& a, const Body& b);
-AngularRows UniversalRows(const Joint& joint, const Body& a, const Body& b);
+// Per-type geometry (joint_ball.cpp, joint_hinge.cpp, joint_universal.cpp), written into `rows`
+// in place: counts, axes, positions, angles and ranges (the effective masses are the caller's).
+void BallRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows);
+void HingeRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows);
+void UniversalRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows);
 
 }  // namespace rise::physics

@@ -17,13 +17,14 @@
 
 namespace rise::physics {
 
-AngularRows BallRows(const Joint& joint, const Body& a, const Body& b) {
-  AngularRows rows;
+void BallRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows) {
+  rows.lockCount = 0;
+  rows.limitCount = 0;
   rows.motorCount = 3;
   rows.motorAxis[0] = glm::vec3(1.0f, 0.0f, 0.0f);
   rows.motorAxis[1] = glm::vec3(0.0f, 1.0f, 0.0f);
   rows.motorAxis[2] = glm::vec3(0.0f, 0.0f, 1.0f);
-  if (!joint.enableLimits) return rows;
+  if (!joint.enableLimits) return;
 
   const glm::quat frameA = a.transform.rotation * joint.localFrameA;
   const glm::quat frameB = b.transform.rotation * joint.localFrameB;
@@ -46,7 +47,6 @@ AngularRows BallRows(const Joint& joint, const Body& a, const Body& b) {
   rows.angle[1] = std::acos(std::clamp(glm::dot(xA, xB), -1.0f, 1.0f));
   rows.range[1] = AngleRange{-1.0f, joint.swingCone};
   rows.limitCount = 2;
-  return rows;
 }
 
 }  // namespace rise::physics

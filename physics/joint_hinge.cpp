@@ -16,14 +16,13 @@
 
 namespace rise::physics {
 
-AngularRows HingeRows(const Joint& joint, const Body& a, const Body& b) {
+void HingeRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows) {
   const glm::quat frameA = a.transform.rotation * joint.localFrameA;
   const glm::quat frameB = b.transform.rotation * joint.localFrameB;
   const glm::vec3 a1 = frameA * glm::vec3(1.0f, 0.0f, 0.0f);
   const glm::vec3 b2 = frameB * glm::vec3(0.0f, 1.0f, 0.0f);
   const glm::vec3 c2 = frameB * glm::vec3(0.0f, 0.0f, 1.0f);
 
-  AngularRows rows;
   rows.lockCount = 2;
   rows.lockAxis[0] = glm::cross(b2, a1);
   rows.lockPosition[0] = glm::dot(a1, b2);
@@ -33,6 +32,7 @@ AngularRows HingeRows(const Joint& joint, const Body& a, const Body& b) {
   rows.motorCount = 1;
   rows.motorAxis[0] = a1;
 
+  rows.limitCount = 0;
   if (joint.enableLimits) {
     glm::quat rel = glm::conjugate(frameA) * frameB;
     if (rel.w < 0.0f) rel = -rel;
@@ -41,7 +41,6 @@ AngularRows HingeRows(const Joint& joint, const Body& a, const Body& b) {
     rows.angle[0] = 2.0f * std::atan2(rel.x, rel.w);
     rows.range[0] = joint.twistLimits;
   }
-  return rows;
 }
 
 }  // namespace rise::physics

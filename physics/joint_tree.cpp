@@ -37,18 +37,19 @@
 // sub-step (WorldSettings::jointTreeErrorReduction), and the relax pass takes its velocity out.
 //
 // Everything else stays sequential impulses: the joints' angular rows (hinge and universal axis
-// locks, limits, PD motors) and the contacts. Every pass solves those first and this last
+// locks, limits, PD motors) and the contacts. A pass solves those first and this last
 // (solver.cpp), a block Gauss-Seidel between an inexact and an exact block, so the anchors have
 // the last word: with contacts last instead, the drop's joints opened to 8 mm at 2 sub-steps.
+// Of three or more biased passes per sub-step only the first and the last end with this solve.
 #include "physics/joint_tree.h"
 
 #include "base/assert.h"
 #include "physics/constraint_parts.h"
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/quaternion.hpp>
 #include <glm/matrix.hpp>
 
+#include <algorithm>
 #include <numeric>
 
 namespace rise::physics {
@@ -64,20 +65,27 @@ int32_t FindRoot(std::vector<int32_t>& parent, int32_t i) {
 }
 
 // m [r]x and [r]x m without the multiplications by the zeros of the cross-product matrix.
-glm::mat3 TimesSkew(const glm::mat3& m, const glm::vec3& r) {
+inline glm::mat3 TimesSkew(const glm::mat3& m, const glm::vec3& r) {
   return glm::mat3(r.z * m[1] - r.y * m[2], r.x * m[2] - r.z * m[0], r.y * m[0] - r.x * m[1]);
 }
-glm::mat3 SkewTimes(const glm::vec3& r, const glm::mat3& m) {
+inline glm::mat3 SkewTimes(const glm::vec3& r, const glm::mat3& m) {
   return glm::mat3(glm::cross(r, m[0]), glm::cross(r, m[1]), glm::cross(r, m[2]));
 }
 
-glm::mat3 WorldInertia(const Body& body) {
-  const glm::mat3 r = glm::mat3_cast(body.transform.rotation);
-  glm::mat3 scaled = r;
-  scaled[0] *= body.inertiaLocal.x;
-  scaled[1] *= body.inertiaLocal.y;
-  scaled[2] *= body.inertiaLocal.z;
-  return scaled * glm::transpose(r);
+// The inverse of a symmetric 3x3 matrix from one triangle of it: six cofactors instead of nine.
+// Every matrix inverted here is symmetric up to rounding (a mass, or G D^-1 G^T).
+inline glm::mat3 InverseSymmetric(const glm::mat3& m) {
+  const float c00 = m[1][1] * m[2][2] - m[1][2] * m[1][2];
+  const float c01 = m[0][2] * m[1][2] - m[0][1] * m[2][2];
+  const float c02 = m[0][1] * m[1][2] - m[0][2] * m[1][1];
+  const float c11 = m[0][0] * m[2][2] - m[0][2] * m[0][2];
+  const float c12 = m[0][1] * m[0][2] - m[0][0] * m[1][2];
+  const float c22 = m[0][0] * m[1][1] - m[0][1] * m[0][1];
+  const float invDet = 1.0f / (m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02);
+  // Entry by entry: built from vec3 columns, the result went through the stack in pieces and was
+  // read back whole, which stalls store-to-load forwarding on this latency-bound path.
+  return glm::mat3(invDet * c00, invDet * c01, invDet * c02, invDet * c01, invDet * c11, invDet * c12, invDet * c02,
+                   invDet * c12, invDet * c22);
 }
 
 }  // namespace
@@ -137,145 +145,173 @@ void BuildJointTree(JointTree& tree, std::vector<Joint>& joints, int bodyCount, 
     if (!visited[body] && !adjacent[body].empty()) visit(body);
   }
 
-  tree.bodySlot.assign(size_t(bodyCount), -1);
-  std::vector<bool> inTree(size_t(bodyCount), false);
+  // Grouped by depth (a stable sort keeps every parent link before its children), so the
+  // factorisation can work on one level's independent links side by side.
+  std::vector<int32_t> depth(size_t(bodyCount) + 1, 0);
+  for (const JointTreeLink& link : tree.links) depth[link.child] = (link.parent >= 0 ? depth[link.parent] : 0) + 1;
+  std::stable_sort(tree.links.begin(), tree.links.end(), [&depth](const JointTreeLink& x, const JointTreeLink& y) {
+    return depth[x.child] < depth[y.child];
+  });
+  for (size_t i = 0; i < tree.links.size(); ++i) {
+    if (i == 0 || depth[tree.links[i].child] != depth[tree.links[i - 1].child]) tree.levelStarts.push_back(int32_t(i));
+  }
+  tree.levelStarts.push_back(int32_t(tree.links.size()));
+
+  // Every parent body gets a slot, in link order.
+  std::vector<int32_t> bodySlot(size_t(bodyCount), -1);
   for (const JointTreeLink& link : tree.links) {
-    inTree[link.child] = true;
-    if (link.parent < 0) continue;
-    inTree[link.parent] = true;
-    if (tree.bodySlot[link.parent] < 0) {
-      tree.bodySlot[link.parent] = int32_t(tree.inverses.size());
-      tree.inverses.emplace_back();
-    }
+    if (link.parent < 0 || bodySlot[link.parent] >= 0) continue;
+    bodySlot[link.parent] = int32_t(tree.slotBodies.size());
+    tree.slotBodies.push_back(link.parent);
   }
-  for (JointTreeLink& link : tree.links) link.childSlot = tree.bodySlot[link.child];
   std::vector<bool> isChild(size_t(bodyCount), false);
-  for (const JointTreeLink& link : tree.links) isChild[link.child] = true;
-  for (int32_t body = 0; body < bodyCount; ++body) {
-    if (inTree[body]) tree.treeBodies.push_back(body);
-    if (inTree[body] && !isChild[body] && tree.bodySlot[body] >= 0) tree.rootBodies.push_back(body);
+  for (JointTreeLink& link : tree.links) {
+    link.childSlot = bodySlot[link.child];
+    link.parentSlot = link.parent >= 0 ? bodySlot[link.parent] : -1;
+    isChild[link.child] = true;
   }
-  tree.scratchA.resize(tree.inverses.size());
-  tree.scratchB.resize(tree.inverses.size());
-  tree.scratchC.resize(tree.inverses.size());
-  tree.deltaV.assign(size_t(bodyCount), glm::vec3(0.0f));
-  tree.deltaW.assign(size_t(bodyCount), glm::vec3(0.0f));
+  const size_t slotCount = tree.slotBodies.size();
+  for (size_t slot = 0; slot < slotCount; ++slot) {
+    if (!isChild[tree.slotBodies[slot]]) tree.rootSlots.push_back(int32_t(slot));
+  }
+  tree.inverses.resize(slotCount);
+  tree.scratchA.resize(slotCount);
+  tree.scratchB.resize(slotCount);
+  tree.scratchC.resize(slotCount);
+  tree.deltaV.resize(slotCount);
+  tree.deltaW.resize(slotCount);
 }
 
 void FactorJointTree(JointTree& tree, const std::vector<Joint>& joints, const std::vector<Body>& bodies) {
   // D of every body with links below it starts as its own mass.
-  for (int32_t body : tree.treeBodies) {
-    const int32_t slot = tree.bodySlot[body];
-    if (slot < 0) continue;
-    tree.scratchA[slot] = glm::mat3(bodies[body].mass);
+  for (size_t slot = 0; slot < tree.slotBodies.size(); ++slot) {
+    const Body& body = bodies[tree.slotBodies[slot]];
+    tree.scratchA[slot] = glm::mat3(body.mass);
     tree.scratchB[slot] = glm::mat3(0.0f);
-    tree.scratchC[slot] = WorldInertia(bodies[body]);
+    tree.scratchC[slot] = InverseSymmetric(body.invInertiaWorld);  // the world inertia
   }
 
+  // Schur complement of the linear block; the explicit blocks of D^-1 are never formed, as every
+  // use of D^-1 multiplies it by something narrower.
   auto invert = [&tree](int32_t slot) {
-    // Schur complement of the linear block: D^-1 = [[A^-1 + X T X^T, -X T], [-T X^T, T]] with
-    // X = A^-1 B and T = (C - B^T X)^-1.
-    const glm::mat3 aInverse = glm::inverse(tree.scratchA[slot]);
-    const glm::mat3 x = aInverse * tree.scratchB[slot];
-    const glm::mat3 t = glm::inverse(tree.scratchC[slot] - glm::transpose(tree.scratchB[slot]) * x);
     JointTreeInverse& inverse = tree.inverses[slot];
-    inverse.coupling = -(x * t);
-    inverse.linear = aInverse - inverse.coupling * glm::transpose(x);
-    inverse.angular = t;
+    inverse.linearInverse = InverseSymmetric(tree.scratchA[slot]);
+    inverse.coupling = inverse.linearInverse * tree.scratchB[slot];
+    inverse.schurInverse =
+        InverseSymmetric(tree.scratchC[slot] - glm::transpose(tree.scratchB[slot]) * inverse.coupling);
   };
 
-  for (auto it = tree.links.rbegin(); it != tree.links.rend(); ++it) {
-    JointTreeLink& link = *it;
-    const Joint& joint = joints[link.joint];
-    const Body& child = bodies[link.child];
-    const glm::vec3& r = link.sign > 0.0f ? joint.leverB : joint.leverA;
-    if (link.childSlot < 0) {
-      link.lowerLinear = glm::mat3(child.invMass);
-      link.lowerAngular = TimesSkew(child.invInertiaWorld, r);
-    } else {
-      invert(link.childSlot);  // every link below the child came earlier in this loop
-      const JointTreeInverse& inverse = tree.inverses[link.childSlot];
-      link.lowerLinear = inverse.linear + TimesSkew(inverse.coupling, r);
-      link.lowerAngular = glm::transpose(inverse.coupling) + TimesSkew(inverse.angular, r);
+  // Leaf to root, one level at a time and each level in three passes over its links: the links
+  // of a level are independent, and a pass over several of them keeps more than one chain of
+  // 3x3 inversions in flight than link after link did (the factorisation was latency-bound).
+  for (size_t level = tree.levelStarts.size() - 1; level-- > 0;) {
+    const auto first = tree.links.begin() + tree.levelStarts[level];
+    const auto last = tree.links.begin() + tree.levelStarts[level + 1];
+    for (auto it = first; it != last; ++it) {
+      JointTreeLink& link = *it;
+      const Joint& joint = joints[link.joint];
+      link.childLever = link.sign > 0.0f ? joint.leverB : joint.leverA;
+      link.parentLever = link.sign > 0.0f ? joint.leverA : joint.leverB;
+      if (link.childSlot >= 0) invert(link.childSlot);  // every link below the child is done
     }
-    link.invMass = glm::inverse(link.lowerLinear - SkewTimes(r, link.lowerAngular));
-    if (link.parent < 0) continue;
-    const int32_t parentSlot = tree.bodySlot[link.parent];
-    const glm::vec3& rp = link.sign > 0.0f ? joint.leverA : joint.leverB;
-    const glm::mat3 sr = TimesSkew(link.invMass, rp);
-    tree.scratchA[parentSlot] += link.invMass;
-    tree.scratchB[parentSlot] -= sr;
-    tree.scratchC[parentSlot] -= SkewTimes(rp, sr);
+    for (auto it = first; it != last; ++it) {
+      JointTreeLink& link = *it;
+      const Body& child = bodies[link.child];
+      const glm::vec3& r = link.childLever;
+      glm::mat3 lowerLinear(child.invMass);
+      if (link.childSlot < 0) {
+        link.lowerAngular = TimesSkew(child.invInertiaWorld, r);
+      } else {
+        // L = D^-1 G^T with G^T = [1; [r]x]: angular rows T ([r]x - X^T), linear rows A^-1 - X (those).
+        const JointTreeInverse& inverse = tree.inverses[link.childSlot];
+        link.lowerAngular = inverse.schurInverse * (SkewMatrix(r) - glm::transpose(inverse.coupling));
+        lowerLinear = inverse.linearInverse - inverse.coupling * link.lowerAngular;
+        link.lowerLinear = lowerLinear;
+      }
+      link.invMass = InverseSymmetric(lowerLinear - SkewTimes(r, link.lowerAngular));
+    }
+    for (auto it = first; it != last; ++it) {
+      const JointTreeLink& link = *it;
+      if (link.parentSlot < 0) continue;
+      const glm::vec3& rp = link.parentLever;
+      const glm::mat3 sr = TimesSkew(link.invMass, rp);
+      tree.scratchA[link.parentSlot] += link.invMass;
+      tree.scratchB[link.parentSlot] -= sr;
+      tree.scratchC[link.parentSlot] -= SkewTimes(rp, sr);
+    }
   }
-  for (int32_t body : tree.rootBodies) invert(tree.bodySlot[body]);
+  for (int32_t slot : tree.rootSlots) invert(slot);
   tree.factorCurrent = true;
 }
 
 void SolveJointTree(JointTree& tree, std::vector<Joint>& joints, std::vector<Body>& bodies, const Body& staticBody,
                     float biasRate) {
   RISE_ASSERT_MSG(tree.factorCurrent, "the joint forest must be factorised before it is solved");
+  // x_i = D_i^-1 x_i of a body with links below it (a slot), applied once its own row is complete.
+  auto applyInverse = [&tree](int32_t slot) {
+    const JointTreeInverse& inverse = tree.inverses[slot];
+    const glm::vec3 v = tree.deltaV[slot];
+    const glm::vec3 w = inverse.schurInverse * (tree.deltaW[slot] - v * inverse.coupling);
+    tree.deltaV[slot] = inverse.linearInverse * v - inverse.coupling * w;
+    tree.deltaW[slot] = w;
+  };
+
   // Forward substitution, leaf to root; the right-hand side is each joint's velocity error. Only
-  // bodies with links below them gather terms; a leaf child's are zero and skipped.
-  for (int32_t body : tree.treeBodies) {
-    if (tree.bodySlot[body] < 0) continue;
-    tree.deltaV[body] = glm::vec3(0.0f);
-    tree.deltaW[body] = glm::vec3(0.0f);
-  }
+  // bodies with links below them (slots) gather terms; a leaf child's are zero. A child's row is
+  // complete when its link comes up, so its diagonal solve happens here rather than in the
+  // backward pass: then L^T x_c = G_c D_c^-1 x_c costs a cross product, not two 3x3 products.
+  std::fill(tree.deltaV.begin(), tree.deltaV.end(), glm::vec3(0.0f));
+  std::fill(tree.deltaW.begin(), tree.deltaW.end(), glm::vec3(0.0f));
   for (auto it = tree.links.rbegin(); it != tree.links.rend(); ++it) {
     JointTreeLink& link = *it;
-    const Joint& joint = joints[link.joint];
-    const Body& a = joint.bodyA >= 0 ? bodies[joint.bodyA] : staticBody;
-    const Body& b = bodies[joint.bodyB];
-    // B's anchor velocity minus A's, and their separation, turned to child minus parent.
-    glm::vec3 error = PointVelocity(b, joint.leverB) - PointVelocity(a, joint.leverA);
+    const Body& child = bodies[link.child];
+    const Body& parent = link.parent >= 0 ? bodies[link.parent] : staticBody;
+    const glm::vec3& rc = link.childLever;
+    const glm::vec3& rp = link.parentLever;
+    // The child's anchor velocity minus the parent's, plus the bias on their separation.
+    glm::vec3 error = PointVelocity(child, rc) - PointVelocity(parent, rp);
     if (biasRate > 0.0f) {
-      error += biasRate * ((b.transform.position + joint.leverB) - (a.transform.position + joint.leverA));
+      error += biasRate * ((child.transform.position + rc) - (parent.transform.position + rp));
     }
-    link.x = -link.sign * error;
+    link.x = -error;
     if (link.childSlot >= 0) {
-      link.x -= tree.deltaV[link.child] * link.lowerLinear + tree.deltaW[link.child] * link.lowerAngular;
+      applyInverse(link.childSlot);
+      link.x -= tree.deltaV[link.childSlot] - glm::cross(rc, tree.deltaW[link.childSlot]);
     }
-    if (link.parent < 0) continue;
+    if (link.parentSlot < 0) continue;
     const glm::vec3 s = link.invMass * link.x;
-    tree.deltaV[link.parent] -= s;
-    tree.deltaW[link.parent] -= glm::cross(link.sign > 0.0f ? joint.leverA : joint.leverB, s);
+    tree.deltaV[link.parentSlot] -= s;
+    tree.deltaW[link.parentSlot] -= glm::cross(rp, s);
   }
 
-  // Diagonal and backward substitution, root to leaf. A body's velocity change is final once
-  // its own row is done, so it is applied there.
-  auto applyInverse = [&tree](int32_t body) {
-    const JointTreeInverse& inverse = tree.inverses[tree.bodySlot[body]];
-    const glm::vec3 v = tree.deltaV[body];
-    const glm::vec3 w = tree.deltaW[body];
-    tree.deltaV[body] = inverse.linear * v + inverse.coupling * w;
-    tree.deltaW[body] = v * inverse.coupling + inverse.angular * w;
+  // Backward substitution, root to leaf. A body's velocity change is final once its own row is
+  // done, so it is applied there.
+  auto applyDelta = [&tree, &bodies](int32_t slot) {
+    Body& body = bodies[tree.slotBodies[slot]];
+    body.linearVelocity += tree.deltaV[slot];
+    body.angularVelocity += tree.deltaW[slot];
   };
-  auto applyDelta = [&tree, &bodies](int32_t body) {
-    bodies[body].linearVelocity += tree.deltaV[body];
-    bodies[body].angularVelocity += tree.deltaW[body];
-  };
-  for (int32_t body : tree.rootBodies) {
-    applyInverse(body);
-    applyDelta(body);
+  for (int32_t slot : tree.rootSlots) {
+    applyInverse(slot);
+    applyDelta(slot);
   }
   for (JointTreeLink& link : tree.links) {
-    Joint& joint = joints[link.joint];
     glm::vec3 y = link.x;
-    if (link.parent >= 0) {
-      const glm::vec3& rp = link.sign > 0.0f ? joint.leverA : joint.leverB;
-      y += tree.deltaV[link.parent] - glm::cross(rp, tree.deltaW[link.parent]);
+    if (link.parentSlot >= 0) {
+      y += tree.deltaV[link.parentSlot] - glm::cross(link.parentLever, tree.deltaW[link.parentSlot]);
     }
     const glm::vec3 x = -(link.invMass * y);
-    joint.linearImpulse -= link.sign * x;  // lambda = -x acts on the child; the joint's on B
+    joints[link.joint].linearImpulse -= link.sign * x;  // lambda = -x acts on the child; the joint's on B
     if (link.childSlot >= 0) {
-      applyInverse(link.child);
-      tree.deltaV[link.child] -= link.lowerLinear * x;
-      tree.deltaW[link.child] -= link.lowerAngular * x;
+      tree.deltaV[link.childSlot] -= link.lowerLinear * x;
+      tree.deltaW[link.childSlot] -= link.lowerAngular * x;
+      applyDelta(link.childSlot);
     } else {
-      tree.deltaV[link.child] = -bodies[link.child].invMass * x;
-      tree.deltaW[link.child] = -(link.lowerAngular * x);
+      // A leaf child: its velocity change is its own response to the joint impulse.
+      Body& child = bodies[link.child];
+      child.linearVelocity -= child.invMass * x;
+      child.angularVelocity -= link.lowerAngular * x;
     }
-    applyDelta(link.child);
   }
 }
 

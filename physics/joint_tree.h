@@ -24,29 +24,39 @@ struct JointTreeLink {
   int32_t parent = -1;  // body index, -1: the static world
   int32_t child = -1;   // body index
   float sign = 1.0f;    // +1 when the child is the joint's body B, -1 when it is body A
-  int32_t childSlot = -1;  // index into JointTree::inverses when the child has links below it
-  // L = D_child^-1 G_child^T, split into its linear and angular 3x3 blocks.
+  int32_t childSlot = -1;   // index into JointTree::inverses when the child has links below it
+  int32_t parentSlot = -1;  // the parent's index into JointTree::inverses, -1 for the world
+  // The lever arms r_c, r_p the forest was factorised with, so a solve never needs the joint's
+  // A/B sides sorted out again.
+  glm::vec3 childLever{0.0f}, parentLever{0.0f};
+  // L = D_child^-1 G_child^T, split into its linear and angular 3x3 blocks (the linear block of
+  // a leaf child is its inverse mass times 1 and is not stored).
   glm::mat3 lowerLinear{0.0f}, lowerAngular{0.0f};
   glm::mat3 invMass{0.0f};  // S^-1: the inverse of the subtree's effective inverse mass at the joint
   glm::vec3 x{0.0f};        // scratch of the solve
 };
 
-// D^-1 of a body that has links below it: its mass plus the subtree hanging from it, as 6x6
-// blocks [[linear, coupling], [coupling^T, angular]] acting on (v, w).
+// D^-1 of a body that has links below it, kept factorised. D = [[A, B], [B^T, C]] is its mass
+// plus the subtree hanging from it, acting on (v, w); with X = A^-1 B and T = (C - B^T X)^-1,
+// D^-1 (v, w) = (A^-1 v - X w', w') where w' = T (w - X^T v).
 struct JointTreeInverse {
-  glm::mat3 linear{0.0f}, coupling{0.0f}, angular{0.0f};
+  glm::mat3 linearInverse{0.0f};  // A^-1
+  glm::mat3 coupling{0.0f};       // X
+  glm::mat3 schurInverse{0.0f};   // T
 };
 
+// Bodies with links below them are numbered by "slot"; everything per body that the factorisation
+// and the solve keep is stored per slot, as a leaf child needs none of it.
 struct JointTree {
   bool active = false;
   int32_t builtJointCount = -1;  // the joint count the forest was built for
   bool factorCurrent = false;    // factorised at the bodies' present poses
   std::vector<JointTreeLink> links;       // root to leaf: every parent link before its children
-  std::vector<int32_t> treeBodies;        // bodies touched by some link
-  std::vector<int32_t> rootBodies;        // root bodies that have links below them
-  std::vector<int32_t> bodySlot;          // per body: index into inverses, or -1
-  std::vector<JointTreeInverse> inverses;
-  // Per-body scratch: D blocks while factorising, velocity changes while solving.
+  std::vector<int32_t> levelStarts;       // links of depth d are [levelStarts[d], levelStarts[d + 1])
+  std::vector<int32_t> slotBodies;        // per slot: its body
+  std::vector<int32_t> rootSlots;         // slots of root bodies (no link above them)
+  std::vector<JointTreeInverse> inverses; // per slot
+  // Per slot: D blocks while factorising, velocity changes while solving.
   std::vector<glm::mat3> scratchA, scratchB, scratchC;
   std::vector<glm::vec3> deltaV, deltaW;
 };

