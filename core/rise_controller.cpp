@@ -1512,8 +1512,10 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
   // toward the plan's CoM: a spring-damper shared among the supports like the
   // weight, its ground forces turned into joint torques with the rest.
   glm::vec3 virtualForce(0.0f);
-  if (OnHandsAndFeet(phase_)) {
-    virtualForce = totalMass_ * (kVirtualStiffness * (comGoal - r.com) - kVirtualDamping * r.comVelocity);
+  static const float vfRise = getenv("VFRISE") ? atof(getenv("VFRISE")) : 0.0f;
+  if (OnHandsAndFeet(phase_) || (vfRise > 0.0f && (phase_ == RisePhase::kRise || phase_ == RisePhase::kStand))) {
+    const float gain = OnHandsAndFeet(phase_) ? 1.0f : vfRise;
+    virtualForce = gain * totalMass_ * (kVirtualStiffness * (comGoal - r.com) - kVirtualDamping * r.comVelocity);
     virtualForce -= ground_.normal * glm::dot(virtualForce, ground_.normal);
     const float limit = kMaxVirtualForce * totalMass_ * 9.81f;
     if (glm::length(virtualForce) > limit) virtualForce *= limit / glm::length(virtualForce);
@@ -1644,7 +1646,8 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
     out.local = LocalRotations(def_.skeleton, pose.worldRotations);
     // The plan's CoM is only needed for the virtual force on hands and feet.
-    const glm::vec3 comGoal = OnHandsAndFeet(phase_) ? PoseCom(GoalAt(move_, progress_, reading, false)) : reading.com;
+    const glm::vec3 comGoal = OnHandsAndFeet(phase_) ? PoseCom(GoalAt(move_, progress_, reading, false))
+                              : getenv("VFRISE") ? PoseCom(GoalAt(move_, progress_, reading, true)) : reading.com;
     FeedForward(reading, comGoal, out.feedForward);
     for (int i = 0; i < 2; ++i) {
       if (planted_[i]) out.gainScale[rig_.end[i]] = kPlantedWristGain;
