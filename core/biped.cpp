@@ -207,6 +207,71 @@ Biped::Biped(const BipedDef& def, physics::World& world, const BipedPose& pose, 
     body.transform = BoxTransform(joint, bind[j]);
     body.friction = friction;
     if (getenv("NOSELF")) body.categoryBits = 0x2u, body.maskBits = 0x1u;
+    if (getenv("NOPAIRS")) {
+      // NOPAIRS=a-b,c-d: groups trunk head uarm farm hand thigh shin foot never collide pairwise
+      static const std::vector<std::string> groups = {"trunk", "head", "uarm", "farm", "hand", "thigh", "shin", "foot"};
+      const std::string& name = joint.name;
+      auto groupOf = [&](const std::string& n) {
+        if (n == "pelvis" || n == "abdomen" || n == "chest") return 0;
+        if (n == "head") return 1;
+        if (n.rfind("upper_arm", 0) == 0) return 2;
+        if (n.rfind("forearm", 0) == 0) return 3;
+        if (n.rfind("hand", 0) == 0) return 4;
+        if (n.rfind("thigh", 0) == 0) return 5;
+        if (n.rfind("shin", 0) == 0) return 6;
+        return 7;
+      };
+      const int g = groupOf(name);
+      body.categoryBits = 1u << (g + 4);
+      uint32_t mask = ~0u;
+      std::string list = getenv("NOPAIRS");
+      size_t pos = 0;
+      while (pos < list.size()) {
+        size_t comma = list.find(',', pos);
+        if (comma == std::string::npos) comma = list.size();
+        const std::string pair = list.substr(pos, comma - pos);
+        const size_t dash = pair.find('-');
+        const std::string a = pair.substr(0, dash), b = pair.substr(dash + 1);
+        int ia = -1, ib = -1;
+        for (int k = 0; k < 8; ++k) { if (groups[k] == a) ia = k; if (groups[k] == b) ib = k; }
+        if (ia == g) mask &= ~(1u << (ib + 4));
+        if (ib == g) mask &= ~(1u << (ia + 4));
+        pos = comma + 1;
+      }
+      body.maskBits = mask;
+    }
+    if (getenv("NOLR")) {
+      // left leg vs right leg
+      const std::string& name = joint.name;
+      const bool leg = name.find("thigh") != std::string::npos || name.find("shin") != std::string::npos || name.find("foot") != std::string::npos;
+      const bool left = name.size() > 2 && name.compare(name.size() - 2, 2, "_l") == 0;
+      body.categoryBits = leg ? (left ? 0x400u : 0x800u) : 0x1u;
+      body.maskBits = leg ? (left ? ~0x800u : ~0x400u) : ~0u;
+    }
+    if (getenv("NOTT")) {
+      // trunk (pelvis, abdomen, chest) vs thighs
+      const std::string& name = joint.name;
+      const bool trunk = name == "pelvis" || name == "abdomen" || name == "chest";
+      const bool thigh = name.find("thigh") != std::string::npos;
+      const bool shin = name.find("shin") != std::string::npos;
+      const bool arm = name.find("arm") != std::string::npos || name.find("hand") != std::string::npos;
+      const bool foot = name.find("foot") != std::string::npos;
+      const bool head = name == "head";
+      const int mode = atoi(getenv("NOTT"));
+      // mode 1: trunk-thigh; 2: +trunk-shin; 3: + arm-leg
+      body.categoryBits = trunk ? 0x10u : thigh ? 0x20u : shin ? 0x40u : arm ? 0x80u : foot ? 0x100u : head ? 0x200u : 0x1u;
+      uint32_t mask = ~0u;
+      if (trunk) mask &= ~0x20u; if (thigh) mask &= ~0x10u;
+      if (mode >= 2) { if (trunk) mask &= ~0x40u; if (shin) mask &= ~0x10u; }
+      if (mode >= 3) { if (arm) mask &= ~(0x20u | 0x40u); if (thigh || shin) mask &= ~0x80u; }
+      if (mode >= 4) { if (arm) mask &= ~0x100u; if (foot) mask &= ~0x80u; }
+      if (mode >= 5) { if (head) mask &= ~(0x20u | 0x40u | 0x80u | 0x100u); if (thigh || shin || arm || foot) mask &= ~0x200u; }
+      if (mode == 20) { body.maskBits = trunk ? ~0x100u : foot ? ~0x10u : ~0u; }
+      if (mode == 21) { body.maskBits = trunk ? ~(0x100u | 0x20u | 0x40u) : foot ? ~0x10u : (thigh || shin) ? ~0x10u : ~0u; }
+      if (mode == 10) { if (arm) mask &= ~0x100u; if (foot) mask &= ~0x80u; }
+      if (mode == 11) { if (thigh || shin) mask &= ~0x100u; if (foot) mask &= ~(0x20u|0x40u); }
+      body.maskBits = mask;
+    }
     if (getenv("NOARMLEG")) {
       const std::string& name = joint.name;
       const bool arm = name.find("arm") != std::string::npos || name.find("hand") != std::string::npos;

@@ -45,7 +45,7 @@ constexpr float kReachTolerance = 0.01f;  // m a planned limb may miss its place
 constexpr float kLandedClearance = 0.02f;
 constexpr float kLandingReach = 0.1f;  // m below the ground a limb being put down aims  // m above the ground a placed hand or foot counts as down
 // Phase 2 starts once the CoM's ground projection is this far inside the feet.
-constexpr float kRiseMargin = 0.02f;  // m
+static const float kRiseMargin = getenv("RM") ? static_cast<float>(atof(getenv("RM"))) : 0.02f;  // m
 // Crawl geometry: how far a hand moves per step, and how far ahead of the feet
 // the hands rest in a squat with the CoM over the feet.
 constexpr float kHandStep = 0.25f;        // m
@@ -72,7 +72,7 @@ static const float kCaptureGain = getenv("CG") ? atof(getenv("CG")) : 1.0f;
 // PlanTrunk's priorities, as weights of its least-squares residuals (per m, rad).
 constexpr float kReachWeight = 30.0f;
 constexpr float kStraightArmWeight = 3.0f;
-constexpr float kComWeight = 1.0f;
+static const float kComWeight = getenv("CW") ? static_cast<float>(atof(getenv("CW"))) : 1.0f;
 constexpr float kComHeightShare = 0.2f;  // of kComWeight, for the CoM's height
 constexpr float kPitchWeight = 0.02f;
 constexpr float kMaxHeelLift = 1.2f;  // rad a foot on its toes may lift its heel
@@ -1195,6 +1195,22 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   }
   if (FeetRegion(r).SignedDistance(Ground(r.com)) < -kRiseMargin || crawlSteps_ >= kMaxCrawlSteps ||
       (move_.name == std::string("sit back") && FeetRegion(r).SignedDistance(Ground(r.com)) < pushBack)) return PlanRise(r);
+  if (getenv("FLATAT")) {
+    bool flat = true;
+    for (int i = 2; i < 4; ++i) flat = flat && glm::dot(r.jointRotations[rig_.end[i]] * kUp, ground_.normal) > std::cos(glm::radians(12.0f));
+    bool down = true;
+    for (int i = 0; i < kLimbCount; ++i) down = down && Clearance(r, static_cast<Limb>(i)) <= kLandedClearance;
+    const float ahead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
+    if (!flat && down && ahead <= static_cast<float>(atof(getenv("FLATAT")))) {
+      const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
+      Move move = OnAllFours(r, "heels down", 1.2);
+      for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
+      const glm::vec3 comGoal = Project(ground_, toes + heading_ * 0.05f) + ground_.normal * (0.45f * standComHeight_);
+      PlanTrunk(move, comGoal, {true, true}, false);
+      if (getenv("DBG")) fprintf(stderr, "t=%.2f heels down at ahead %.2f reachable %d\n", r.time, ahead, (int)Reachable(move));
+      if (Reachable(move)) { ++crawlSteps_; return move; }
+    }
+  }
   const std::vector<Limb> candidates = getenv("HOLD") ? std::vector<Limb>{} : StepCandidates(r);
   if (getenv("HOLD")) {
     Move move = OnAllFours(r, "centre", 0.8);
@@ -1204,10 +1220,25 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   if (candidates.empty()) {
     // Hands and feet are together: the CoM goes back over the toes, hips low,
     // the hands still touching; the rise lets go of them once it is there.
-    Move move = OnAllFours(r, "sit back", getenv("SBD") ? atof(getenv("SBD")) : 1.2);
     const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
-    const glm::vec3 comGoal = Project(ground_, toes - heading_ * kSitBackBehindToes) + ground_.normal * (0.45f * standComHeight_);
-    PlanTrunk(move, comGoal, {true, true}, true);
+    if (getenv("FLAT")) {
+      bool flat = true;
+      for (int i = 2; i < 4; ++i) flat = flat && glm::dot(r.jointRotations[rig_.end[i]] * kUp, ground_.normal) > std::cos(glm::radians(12.0f));
+      if (!flat) {
+        Move move = OnAllFours(r, "heels down", 1.2);
+        for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
+        const float ahead = static_cast<float>(atof(getenv("FLAT")));
+        const glm::vec3 comGoal = Project(ground_, toes + heading_ * ahead) + ground_.normal * (0.45f * standComHeight_);
+        PlanTrunk(move, comGoal, {true, true}, false);
+        ++crawlSteps_;
+        return move;
+      }
+    }
+    Move move = OnAllFours(r, "sit back", getenv("SBD") ? atof(getenv("SBD")) : 1.2);
+    const float behind = getenv("FLATBACK") ? static_cast<float>(atof(getenv("FLATBACK"))) : kSitBackBehindToes;
+    if (getenv("FLAT")) for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
+    const glm::vec3 comGoal = Project(ground_, toes - heading_ * behind) + ground_.normal * (0.45f * standComHeight_);
+    PlanTrunk(move, comGoal, {true, true}, !getenv("FLAT"));
     ++crawlSteps_;
     if (getenv("DBG")) {
       const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, GoalAt(move, 1.0f, BodyReading{}));
@@ -1446,7 +1477,7 @@ bool RiseController::KneeDown(const BodyReading& r, int leg) const {
   return Height(ground_, r.jointPositions[rig_.lower[leg]]) < kneelHeight_ + kLandedClearance;
 }
 
-glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb) const {
+glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb, const glm::vec3& pressure) const {
   const int end = rig_.end[static_cast<int>(limb)];
   const glm::quat rotation = r.jointRotations[end];
   if (IsArm(limb) || glm::dot(rotation * kUp, ground_.normal) < std::cos(glm::radians(10.0f))) return ContactPoint(r, limb);
@@ -1457,7 +1488,7 @@ glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb) const {
   const BoneBox& box = def_.skeleton.joints[end].box;
   const glm::vec3 centre = r.jointPositions[end] + rotation * box.center;
   const glm::vec3 along = rotation * glm::vec3(0.0f, 0.0f, 1.0f);
-  const float offset = std::clamp(glm::dot(r.com - centre, along), -box.halfExtents.z, box.halfExtents.z);
+  const float offset = std::clamp(glm::dot(pressure - centre, along), -box.halfExtents.z, box.halfExtents.z);
   return Project(ground_, centre + along * offset);
 }
 
@@ -1476,15 +1507,28 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
     glm::vec3 point;  // where
     float share = 0.0f;
   };
+  glm::vec3 pressure = r.com, balanceForce(0.0f);
+  if ((phase_ == RisePhase::kRise || phase_ == RisePhase::kStand) && getenv("COP")) {
+    static const float kp = getenv("COPK") ? static_cast<float>(atof(getenv("COPK"))) : 9.0f;
+    static const float kd = getenv("COPD") ? static_cast<float>(atof(getenv("COPD"))) : 6.0f;
+    glm::vec3 accel = kp * (BalancePoint(r) - r.com) - kd * r.comVelocity;
+    accel -= ground_.normal * glm::dot(accel, ground_.normal);
+    const glm::vec2 wanted = Ground(r.com - accel * (Height(ground_, r.com) / 9.81f));
+    const SupportPolygon feet = FeetRegion(r);
+    const glm::vec2 cop = feet.SignedDistance(wanted) < 0.0f ? wanted : feet.Closest(wanted);
+    pressure = Project(ground_, glm::vec3(cop.x, 0.0f, cop.y));
+    balanceForce = totalMass_ * 9.81f / std::max(0.2f, Height(ground_, r.com)) * Horizontal(r.com - pressure);
+    balanceForce -= ground_.normal * glm::dot(balanceForce, ground_.normal);
+  }
   std::vector<Support> supports;
   for (int i = 0; i < kLimbCount; ++i) {
-    if (planted_[i] && r.touching[i]) supports.push_back({rig_.end[i], SupportPoint(r, static_cast<Limb>(i))});
+    if (planted_[i] && r.touching[i]) supports.push_back({rig_.end[i], SupportPoint(r, static_cast<Limb>(i), pressure)});
   }
   for (int leg = 2; leg < 4; ++leg) {
     if (move_.kneeling && KneeDown(r, leg)) supports.push_back({rig_.lower[leg], KneePoint(r, leg)});
   }
   if (supports.empty()) return;
-  const glm::vec2 c = Ground(r.com);
+  const glm::vec2 c = Ground(pressure);
   for (int pass = 0; pass < 3; ++pass) {
     // Solve A A^T y = b, w = A^T y with A = [1; x; z] over the supports.
     glm::mat3 normal(0.0f);
@@ -1511,7 +1555,7 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
   // On hands and feet, a virtual force on the CoM (Coros et al. 2010) pulls it
   // toward the plan's CoM: a spring-damper shared among the supports like the
   // weight, its ground forces turned into joint torques with the rest.
-  glm::vec3 virtualForce(0.0f);
+  glm::vec3 virtualForce = balanceForce;
   static const float vfRise = getenv("VFRISE") ? atof(getenv("VFRISE")) : 0.0f;
   if (OnHandsAndFeet(phase_) || (vfRise > 0.0f && (phase_ == RisePhase::kRise || phase_ == RisePhase::kStand))) {
     const float gain = OnHandsAndFeet(phase_) ? 1.0f : vfRise;

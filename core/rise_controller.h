@@ -210,7 +210,7 @@ class RiseController {
   // of a foot on its toes, the middle of a flat sole.
   glm::vec3 ContactPoint(const BodyReading& reading, Limb limb) const;
   // Where a planted hand or foot is to press on the ground, for FeedForward.
-  glm::vec3 SupportPoint(const BodyReading& reading, Limb limb) const;
+  glm::vec3 SupportPoint(const BodyReading& reading, Limb limb, const glm::vec3& pressure) const;
 
   const BipedDef& def_;
   RiseSpec spec_;
