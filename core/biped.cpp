@@ -3,7 +3,6 @@
 #include "core/biped.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -18,6 +17,8 @@ namespace rise {
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
+// Collision categories of the body's boxes (see the constructor).
+constexpr uint32_t kTrunkCategory = 0x2u, kLimbCategory = 0x4u, kHeadCategory = 0x8u;
 const glm::vec3 kAxisX(1, 0, 0), kAxisY(0, 1, 0), kAxisZ(0, 0, 1);
 
 float Radians(double degrees) {
@@ -206,79 +207,16 @@ Biped::Biped(const BipedDef& def, physics::World& world, const BipedPose& pose, 
     body.mass = def_.bones[j].massKg;
     body.transform = BoxTransform(joint, bind[j]);
     body.friction = friction;
-    if (getenv("NOSELF")) body.categoryBits = 0x2u, body.maskBits = 0x1u;
-    if (getenv("NOPAIRS")) {
-      // NOPAIRS=a-b,c-d: groups trunk head uarm farm hand thigh shin foot never collide pairwise
-      static const std::vector<std::string> groups = {"trunk", "head", "uarm", "farm", "hand", "thigh", "shin", "foot"};
-      const std::string& name = joint.name;
-      auto groupOf = [&](const std::string& n) {
-        if (n == "pelvis" || n == "abdomen" || n == "chest") return 0;
-        if (n == "head") return 1;
-        if (n.rfind("upper_arm", 0) == 0) return 2;
-        if (n.rfind("forearm", 0) == 0) return 3;
-        if (n.rfind("hand", 0) == 0) return 4;
-        if (n.rfind("thigh", 0) == 0) return 5;
-        if (n.rfind("shin", 0) == 0) return 6;
-        return 7;
-      };
-      const int g = groupOf(name);
-      body.categoryBits = 1u << (g + 4);
-      uint32_t mask = ~0u;
-      std::string list = getenv("NOPAIRS");
-      size_t pos = 0;
-      while (pos < list.size()) {
-        size_t comma = list.find(',', pos);
-        if (comma == std::string::npos) comma = list.size();
-        const std::string pair = list.substr(pos, comma - pos);
-        const size_t dash = pair.find('-');
-        const std::string a = pair.substr(0, dash), b = pair.substr(dash + 1);
-        int ia = -1, ib = -1;
-        for (int k = 0; k < 8; ++k) { if (groups[k] == a) ia = k; if (groups[k] == b) ib = k; }
-        if (ia == g) mask &= ~(1u << (ib + 4));
-        if (ib == g) mask &= ~(1u << (ia + 4));
-        pos = comma + 1;
-      }
-      body.maskBits = mask;
-    }
-    if (getenv("NOLR")) {
-      // left leg vs right leg
-      const std::string& name = joint.name;
-      const bool leg = name.find("thigh") != std::string::npos || name.find("shin") != std::string::npos || name.find("foot") != std::string::npos;
-      const bool left = name.size() > 2 && name.compare(name.size() - 2, 2, "_l") == 0;
-      body.categoryBits = leg ? (left ? 0x400u : 0x800u) : 0x1u;
-      body.maskBits = leg ? (left ? ~0x800u : ~0x400u) : ~0u;
-    }
-    if (getenv("NOTT")) {
-      // trunk (pelvis, abdomen, chest) vs thighs
-      const std::string& name = joint.name;
-      const bool trunk = name == "pelvis" || name == "abdomen" || name == "chest";
-      const bool thigh = name.find("thigh") != std::string::npos;
-      const bool shin = name.find("shin") != std::string::npos;
-      const bool arm = name.find("arm") != std::string::npos || name.find("hand") != std::string::npos;
-      const bool foot = name.find("foot") != std::string::npos;
-      const bool head = name == "head";
-      const int mode = atoi(getenv("NOTT"));
-      // mode 1: trunk-thigh; 2: +trunk-shin; 3: + arm-leg
-      body.categoryBits = trunk ? 0x10u : thigh ? 0x20u : shin ? 0x40u : arm ? 0x80u : foot ? 0x100u : head ? 0x200u : 0x1u;
-      uint32_t mask = ~0u;
-      if (trunk) mask &= ~0x20u; if (thigh) mask &= ~0x10u;
-      if (mode >= 2) { if (trunk) mask &= ~0x40u; if (shin) mask &= ~0x10u; }
-      if (mode >= 3) { if (arm) mask &= ~(0x20u | 0x40u); if (thigh || shin) mask &= ~0x80u; }
-      if (mode >= 4) { if (arm) mask &= ~0x100u; if (foot) mask &= ~0x80u; }
-      if (mode >= 5) { if (head) mask &= ~(0x20u | 0x40u | 0x80u | 0x100u); if (thigh || shin || arm || foot) mask &= ~0x200u; }
-      if (mode == 20) { body.maskBits = trunk ? ~0x100u : foot ? ~0x10u : ~0u; }
-      if (mode == 21) { body.maskBits = trunk ? ~(0x100u | 0x20u | 0x40u) : foot ? ~0x10u : (thigh || shin) ? ~0x10u : ~0u; }
-      if (mode == 10) { if (arm) mask &= ~0x100u; if (foot) mask &= ~0x80u; }
-      if (mode == 11) { if (thigh || shin) mask &= ~0x100u; if (foot) mask &= ~(0x20u|0x40u); }
-      body.maskBits = mask;
-    }
-    if (getenv("NOARMLEG")) {
-      const std::string& name = joint.name;
-      const bool arm = name.find("arm") != std::string::npos || name.find("hand") != std::string::npos;
-      const bool leg = name.find("thigh") != std::string::npos || name.find("shin") != std::string::npos || name.find("foot") != std::string::npos;
-      body.categoryBits = arm ? 0x4u : leg ? 0x8u : 0x2u;
-      body.maskBits = arm ? ~0x8u : leg ? ~0x4u : ~0u;
-    }
+    // The trunk's boxes (pelvis, abdomen, chest) and the limbs' boxes pass
+    // through each other. Boxes are a coarse body: where a person's thigh
+    // presses into the belly in a squat or the upper arm lies against the
+    // ribs, the boxes overlap by centimetres, and colliding, they held the
+    // body out of the squat it rises from (0 of 36 prone starts stood, 14
+    // with this filter). Head, limbs and the ground still collide.
+    const bool trunk = joint.name == "pelvis" || joint.name == "abdomen" || joint.name == "chest";
+    const bool head = joint.name == "head";
+    body.categoryBits = trunk ? kTrunkCategory : head ? kHeadCategory : kLimbCategory;
+    body.maskBits = trunk ? ~kLimbCategory : head ? ~0u : ~kTrunkCategory;
     bodies_[j] = world.CreateBody(body);
   }
   for (int j = 1; j < count; ++j) {

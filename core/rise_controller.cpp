@@ -13,8 +13,6 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
-#include <cstdlib>
-#include <cstdio>
 #include <cmath>
 #include <utility>
 
@@ -40,39 +38,42 @@ constexpr int kMaxCrawlSteps = 24;
 constexpr float kLiftMargin = 0.03f;  // m
 constexpr float kShiftMargin = 0.06f;  // m
 constexpr int kMaxShiftTries = 2;
-constexpr float kHandLineMargin = 0.15f;  // m the CoM stays behind the hands on hands and feet
+// While a foot steps, the CoM stays this far behind the hands' line: over it
+// the body pivots on its hands.
+constexpr float kFootLiftHandLineMargin = 0.22f;  // m
 constexpr float kReachTolerance = 0.01f;  // m a planned limb may miss its place by
-constexpr float kLandedClearance = 0.02f;
-constexpr float kLandingReach = 0.1f;  // m below the ground a limb being put down aims  // m above the ground a placed hand or foot counts as down
+constexpr float kLandedClearance = 0.02f;  // m above the ground a placed hand or foot counts as down
+constexpr float kLandingReach = 0.1f;      // m below the ground a limb being put down aims
 // Phase 2 starts once the CoM's ground projection is this far inside the feet.
-static const float kRiseMargin = getenv("RM") ? static_cast<float>(atof(getenv("RM"))) : 0.02f;  // m
-// Crawl geometry: how far a hand moves per step, and how far ahead of the feet
-// the hands rest in a squat with the CoM over the feet.
-constexpr float kHandStep = 0.25f;        // m
-// A hand steps back at most this far behind the other: a hand left far ahead
-// holds the CoM forward, out of the triangle the other hand and feet make,
-// so it could never lift in its turn.
-constexpr float kHandStagger = 0.12f;  // m
-constexpr float kSquatHandsAhead = 0.35f; // m, from the toes
-static const float kSitBackBehindToes = getenv("SBT") ? atof(getenv("SBT")) : 0.06f; // m the sit-back puts the CoM behind the toe edges
-constexpr float kSquatComRatio = 0.6f;     // CoM height in that squat, of the standing CoM height
+constexpr float kRiseMargin = 0.02f;  // m
+// The sit back puts the CoM this far behind the middle of the flat soles:
+// far enough in that the rise starts with room to brake a drift either way.
+constexpr float kSitBackBehindSoles = 0.1f;  // m
+constexpr float kSquatComRatio = 0.45f;    // CoM height in the squat the crawl ends in, of the standing CoM height
+// The sit back hands over to the rise once the CoM is within this of the soles.
+constexpr float kSitBackReach = 0.05f;  // m
+constexpr float kFlatSole = glm::radians(12.0f);  // a sole tilted less than this is flat
 // Supporting arms are kept straight, so the weight goes down the bones and
 // into the elbow's limit instead of through the weak elbow servo.
 constexpr float kSupportArmReach = 1.0f;  // shoulder-to-wrist, of the arm's reach
 // Planted hands' wrists go soft so the palm lies flat and takes load at its heel.
 constexpr float kPlantedWristGain = 0.15f;
-// Feet at least this far either side of the midline in the crawl, so the
-// triangle of both feet and one hand contains the CoM with a small lean.
-static const float kCrawlHalfStance = getenv("HS") ? atof(getenv("HS")) : 0.26f;  // m
+// Feet this far either side of the hands' midline in the crawl: narrow, so
+// the knees come in between the arms as the feet walk up to the hands and the
+// squat the rise starts from is balanced side to side (0.10-0.15 m measured:
+// 11, 14 and 5 of 36 prone starts stood).
+constexpr float kCrawlHalfStance = 0.12f;  // m
 constexpr int kMaxRetries = 4;
 constexpr float kMaxLimbSpeed = 1.5f;  // m/s, average along a swing
 // Phase 2's balance feedback: how far the pose's CoM goal moves against the
 // capture point's offset from the feet centre.
-static const float kCaptureGain = getenv("CG") ? atof(getenv("CG")) : 1.0f;
+constexpr float kCaptureGain = 1.0f;
 // PlanTrunk's priorities, as weights of its least-squares residuals (per m, rad).
 constexpr float kReachWeight = 30.0f;
 constexpr float kStraightArmWeight = 3.0f;
-static const float kComWeight = getenv("CW") ? static_cast<float>(atof(getenv("CW"))) : 1.0f;
+// The CoM outweighs straight arms: at 1 the bear stance's shifts moved the
+// planned CoM 3 mm of a 10 cm goal (the arms held the shoulders).
+constexpr float kComWeight = 10.0f;
 constexpr float kComHeightShare = 0.2f;  // of kComWeight, for the CoM's height
 constexpr float kPitchWeight = 0.02f;
 constexpr float kMaxHeelLift = 1.2f;  // rad a foot on its toes may lift its heel
@@ -90,15 +91,18 @@ constexpr float kMaxCrawlOffset = 0.06f;  // m
 constexpr float kVirtualStiffness = 12.0f;  // 1/s^2
 constexpr float kVirtualDamping = 7.0f;     // 1/s
 constexpr float kMaxVirtualForce = 0.25f;
+// Phase 2's ankle strategy: the CoM's wanted acceleration toward the balance
+// point, per m of offset and per m/s (omega 3 rad/s, critically damped).
+constexpr float kBalanceStiffness = 9.0f;  // 1/s^2
+constexpr float kBalanceDamping = 6.0f;    // 1/s
 constexpr float kMaxBalanceSlide = 0.1f;  // m the pelvis may slide from its planned place
 constexpr float kMaxBalanceLean = 1.2f;   // rad the trunk may lean forward of its plan
 constexpr float kLeanRate = 0.8f;         // rad/s the balance lean may change
 // The feet walk in while the hands are farther than this ahead of them (from
 // nearer, a foot can hardly come further under a body bent at the hips); a
 // foot step is at most kFootStep long.
-static const float kFootWalkDistance = getenv("FW") ? atof(getenv("FW")) : 0.4f;  // m
-static const float kHandOut = getenv("HO") ? atof(getenv("HO")) : 0.0f;
-static const float kPikeComRatio = getenv("PIKE") ? atof(getenv("PIKE")) : 0.62f;
+constexpr float kFootWalkDistance = 0.5f;  // m
+constexpr float kPikeComRatio = 0.62f;     // CoM height of the pike as the feet come in, of standing
 constexpr float kFootStep = 0.3f;          // m
 constexpr float kFootLead = 0.1f;          // m
 constexpr float kMinFootStep = 0.06f;      // m: a reachable step shorter than this ends the walk-in
@@ -190,8 +194,6 @@ RiseController::RiseController(const BipedDef& def, const RiseSpec& spec)
   shoulderHalfWidth_ = std::fabs(sk.BindPositions()[rig_.upper[0]].x);
   // The crawl keeps the hips high (a pike), so knees stay off the ground.
   crawlComHeight_ = 0.5f * standComHeight_;
-  // A knee rests on the front of its shin box.
-  kneelHeight_ = sk.joints[rig_.lower[2]].box.halfExtents.z;
   const BoneBox& foot = sk.joints[rig_.end[2]].box;
   toeLocal_ = glm::vec3(0.0f, foot.center.y - foot.halfExtents.y, foot.center.z + foot.halfExtents.z);
   subtree_.assign(sk.joints.size(), {});
@@ -416,8 +418,7 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
     // plan does not count as supports.
     for (int leg = 2; leg < 4; ++leg) {
       const float height = Height(ground_, pose.worldPositions[rig_.lower[leg]]);
-      r[3 + 3 * kLimbCount + 2 + (leg - 2)] =
-          kReachWeight * (move.kneeling ? height - kneelHeight_ : std::max(0.0f, kKneeClearance - height));
+      r[3 + 3 * kLimbCount + 2 + (leg - 2)] = kReachWeight * std::max(0.0f, kKneeClearance - height);
     }
     r[kResiduals - 2] = kPitchWeight * (x[3] - startPitch);
     r[kResiduals - 1] = kCurlWeight * x[5];
@@ -665,7 +666,6 @@ void RiseController::StartMove(Move move) {
     move.duration = std::max(move.duration, static_cast<double>(path / (kMaxLimbSpeed * std::max(limb.span, 0.1f))));
   }
   move_ = std::move(move);
-  if (getenv("DBG")) fprintf(stderr, "  -> move %s (%.2f s)\n", move_.name.c_str(), move_.duration);
   phase_ = move_.phase;
   hasMove_ = true;
   progress_ = 0.0f;
@@ -874,7 +874,7 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
     LimbMove& m = move.limbs[i];
     m = HoldLimb(r, hand, false);
     m.toRotation = PlantedHandRotation(hand);
-    m.to = WristAbove(hand, Project(ground_, shoulder - heading_ * 0.04f + glm::normalize(glm::cross(kUp, heading_)) * (i == 0 ? kHandOut : -kHandOut)), m.toRotation);
+    m.to = WristAbove(hand, Project(ground_, shoulder - heading_ * 0.04f), m.toRotation);
     m.lift = HandSwingLift(hand);
     m.delay = i == 0 ? 0.0f : 0.3f;
     m.span = 0.7f;
@@ -886,8 +886,7 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
     const float side = IsLeft(foot) ? 1.0f : -1.0f;
     const glm::vec3 hip = LimbRoot(def_.skeleton, rig_, trunk, foot);
     const float hipHalf = std::fabs(glm::dot(hip - move.from.pelvis, left));
-    const float halfStance = getenv("HS") ? kCrawlHalfStance : std::max(0.5f * static_cast<float>(spec_.style.stanceWidthM), kCrawlHalfStance);
-    const glm::vec3 toe = Project(ground_, hip - heading_ * (0.9f * legReach_) + left * side * (halfStance - hipHalf));
+    const glm::vec3 toe = Project(ground_, hip - heading_ * (0.9f * legReach_) + left * side * (kCrawlHalfStance - hipHalf));
     LimbMove& m = move.limbs[i];
     m = HoldLimb(r, foot, false);
     m.toRotation = FootRotation(heading_, glm::radians(80.0f));
@@ -921,7 +920,6 @@ RiseController::Move RiseController::PlanPush(const BodyReading& r) {
   crawlSteps_ = 0;
   shiftTries_ = 0;
   stepSpot_ = {};
-  kneelStage_ = KneelStage::kNone;
   feetIn_ = false;
   crawlOffset_ = glm::vec3(0.0f);
   return move;
@@ -948,51 +946,31 @@ float RiseController::HandsAhead(const BodyReading& r, Limb hand) const {
 }
 
 std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
-  // Phase 1 brings hands and feet together until the CoM can sit over the
-  // toes with the hands still down (bench/reach_probe: with the hands within
-  // about 0.4 m of the toes): the feet walk in while they are far (each hand
-  // step would gain little there), then the hands walk back toward the feet
-  // as the paper's Phase 1 does. Candidates in order of preference; the
-  // crawl takes the first whose lift it can balance.
+  // Phase 1 brings the feet in to the hands until the CoM can sit back over
+  // them with the hands still down (bench/reach_probe: the hands within about
+  // 0.4-0.5 m of the toes): the rear foot steps, then the other, and once in,
+  // the rear one comes up beside the other. The hands stay where the push put
+  // them: walking them back as well, as the paper's Phase 1 does, stood 3 of
+  // 36 prone starts (bench/prone_variants) against 14 with the feet alone.
   // A step that ended short leaves its limb in the air: it goes down first.
   for (int i = 0; i < kLimbCount; ++i) {
     if (Clearance(r, static_cast<Limb>(i)) > kLandedClearance) return {static_cast<Limb>(i)};
   }
-  const float left = HandsAhead(r, Limb::kHandLeft), right = HandsAhead(r, Limb::kHandRight);
-  std::vector<Limb> hands;
-  const float least = kSquatHandsAhead + 0.5f * kHandStep;
-  if (left > least && left > right - kHandStagger + 0.05f) hands.push_back(Limb::kHandLeft);
-  if (right > least && right > left - kHandStagger + 0.05f) hands.push_back(Limb::kHandRight);
-  if (hands.size() == 2 && right > left) std::swap(hands[0], hands[1]);
+  // By the ankles, as the step length measures them (toe edges can sit askew).
   const float stagger = glm::dot(r.jointPositions[rig_.end[2]] - r.jointPositions[rig_.end[3]], heading_);
-  if (getenv("NOHANDS") && (0.5f * (left + right) <= kFootWalkDistance + kMinFootStep || feetIn_)) {
-    // In: the rear foot comes up beside the other before the CoM goes back over them.
-    if (std::fabs(stagger) > kMinFootStep) return {stagger < 0.0f ? Limb::kFootLeft : Limb::kFootRight};
-    if (getenv("ALIGNLAT")) {
-      const glm::vec3 side = glm::normalize(glm::cross(kUp, heading_));
-      const glm::vec3 hands = 0.5f * (ContactPoint(r, Limb::kHandLeft) + ContactPoint(r, Limb::kHandRight));
-      const float halfStance = getenv("HS") ? kCrawlHalfStance : std::max(0.5f * static_cast<float>(spec_.style.stanceWidthM), kCrawlHalfStance);
-      for (const Limb foot : {Limb::kFootLeft, Limb::kFootRight}) {
-        const float want = IsLeft(foot) ? halfStance : -halfStance;
-        if (std::fabs(glm::dot(ContactPoint(r, foot) - hands, side) - want) > static_cast<float>(atof(getenv("ALIGNLAT")))) return {foot};
-      }
-    }
+  const Limb rear = stagger < 0.0f ? Limb::kFootLeft : Limb::kFootRight;
+  const float handsAhead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
+  if (handsAhead <= kFootWalkDistance + kMinFootStep || feetIn_) {
+    if (std::fabs(stagger) > kMinFootStep) return {rear};
     return {};
   }
-  if (0.5f * (left + right) <= kFootWalkDistance || feetIn_) return hands;
-  // Ankles, as the step length measures them (toe edges can sit askew).
-  const bool leftBehind = glm::dot(r.jointPositions[rig_.end[2]] - r.jointPositions[rig_.end[3]], heading_) < 0.0f;
-  // Only the rear foot: the front one could only creep ahead of it.
-  return {leftBehind ? Limb::kFootLeft : Limb::kFootRight};
+  return {rear};
 }
 
 SupportPolygon RiseController::StanceWithout(const BodyReading& r, Limb lifted) const {
   std::vector<glm::vec2> points;
   for (int i = 0; i < kLimbCount; ++i) {
     if (i != static_cast<int>(lifted)) points.push_back(Ground(ContactPoint(r, static_cast<Limb>(i))));
-  }
-  for (int leg = 2; leg < 4; ++leg) {
-    if (kneelStage_ != KneelStage::kNone && kneelStage_ != KneelStage::kUp && KneeDown(r, leg)) points.push_back(Ground(KneePoint(r, leg)));
   }
   return SupportPolygon::FromPoints(points);
 }
@@ -1029,27 +1007,20 @@ glm::vec3 RiseController::FootLiftCom(const BodyReading& r, Limb foot) const {
   // Never near the hands' line: over it the body pivots on its hands.
   const glm::vec2 forward = glm::normalize(Ground(heading_));
   const float handLine = std::min(glm::dot(hl, forward), glm::dot(hr, forward));
-  static const float margin = getenv("HLM") ? atof(getenv("HLM")) : kHandLineMargin;
-  deep -= forward * std::max(0.0f, glm::dot(deep, forward) - (handLine - margin));
+  deep -= forward * std::max(0.0f, glm::dot(deep, forward) - (handLine - kFootLiftHandLineMargin));
   return Project(ground_, glm::vec3(deep.x, 0.0f, deep.y)) + ground_.normal * CrawlComHeight(r);
 }
 
 std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading& r, Limb lifted) const {
   const SupportPolygon stance = StanceWithout(r, lifted);
   const glm::vec2 forward = glm::normalize(Ground(heading_));
-  // The nearest point kShiftMargin inside the support of the limbs that stay,
-  // from a point a little behind the CoM for a hand step (toward the feet,
-  // the paper's secondary goal), never near the hands' line for a foot step
-  // (over it the body pivots on its hands).
+  // For a hand: the nearest point kShiftMargin inside the support of the limbs
+  // that stay, from a point a little behind the CoM (toward the feet, the
+  // paper's secondary goal).
   auto inside = [&](glm::vec2 from) {
     glm::vec2 goal = stance.Closest(from);
     const glm::vec2 centre = stance.Centroid();
     for (int k = 0; k < 30 && stance.SignedDistance(goal) > -kShiftMargin; ++k) goal += 0.1f * (centre - goal);
-    if (!IsArm(lifted)) {
-      const float handLine = std::min(glm::dot(Ground(ContactPoint(r, Limb::kHandLeft)), forward),
-                                      glm::dot(Ground(ContactPoint(r, Limb::kHandRight)), forward));
-      goal -= forward * std::max(0.0f, glm::dot(goal, forward) - (handLine - kHandLineMargin));
-    }
     return Project(ground_, glm::vec3(goal.x, 0.0f, goal.y)) + ground_.normal * CrawlComHeight(r);
   };
   std::vector<glm::vec3> goals;
@@ -1083,169 +1054,47 @@ std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading&
     for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, heelLift);
     PlanTrunk(move, comGoal, {true, true}, true);
     const glm::vec3 planned = PoseCom(GoalAt(move, 1.0f, BodyReading{}));
-    if (getenv("DBG")) fprintf(stderr, "t=%.2f shift for %d: goal (%.2f %.2f %.2f) planned (%.2f %.2f %.2f) margin %.3f reach %d pelvis (%.2f %.2f %.2f)\n", r.time, (int)lifted, comGoal.x, comGoal.y, comGoal.z, planned.x, planned.y, planned.z, -stance.SignedDistance(Ground(planned)), (int)Reachable(move), move.to.pelvis.x, move.to.pelvis.y, move.to.pelvis.z);
     if (stance.SignedDistance(Ground(planned)) < -kLiftMargin) return move;
   }
   return std::nullopt;
 }
 
-RiseController::Move RiseController::PlanKneel(const BodyReading& r) {
-  // Phase 1 on the knees: knees and toes make a support the CoM sits deep
-  // inside, so the hands walk in to the feet without the balance a hand or foot
-  // lifted from hands and feet needs; then the knees come up into a squat on
-  // the toes with the hands still down, from where the CoM goes over the feet.
-  const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
-  const glm::vec3 knees = 0.5f * (KneePoint(r, 2) + KneePoint(r, 3));
-  const glm::vec3 wrists = 0.5f * (ContactPoint(r, Limb::kHandLeft) + ContactPoint(r, Limb::kHandRight));
-  auto held = [&](const char* name, double duration) {
-    Move move = OnAllFours(r, name, duration);
-    for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), glm::radians(70.0f));
-    move.kneeling = true;
-    return move;
-  };
-  switch (kneelStage_) {
-    case KneelStage::kNone: {
-      // Down onto the knees, hips over them, hands and toes where they are.
-      Move move = held("kneel", 1.2);
-      const glm::vec3 comGoal = Project(ground_, glm::mix(wrists, toes, 0.45f)) + ground_.normal * (0.3f * standComHeight_);
-      PlanTrunk(move, comGoal, {true, true}, true);
-      kneelStage_ = KneelStage::kKneel;
-      if (getenv("DBG")) {
-        const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, GoalAt(move, 1.0f, BodyReading{}));
-        fprintf(stderr, "kneel plan: knees %.3f %.3f pelvis (%.2f %.2f %.2f) reach %d com %.2f %.2f %.2f goal %.2f %.2f %.2f\n",
-          Height(ground_, pose.worldPositions[rig_.lower[2]]), Height(ground_, pose.worldPositions[rig_.lower[3]]),
-          move.to.pelvis.x, move.to.pelvis.y, move.to.pelvis.z, (int)Reachable(move), PoseCom(pose).x, PoseCom(pose).y, PoseCom(pose).z, comGoal.x, comGoal.y, comGoal.z);
-        for (int i = 0; i < 4; ++i) { glm::vec3 a = pose.worldPositions[rig_.end[i]], t = GoalAt(move, 1.0f, BodyReading{}).limbs[i].target; fprintf(stderr, "  limb %d miss %.3f\n", i, glm::length(a - t)); }
-      }
-      return move;
-    }
-    case KneelStage::kKneel: {
-      // Back over the knees and toes, the arms reaching forward to the hands.
-      Move move = held("sit on heels", 1.2);
-      const glm::vec3 comGoal = Project(ground_, glm::mix(knees, toes, 0.3f)) + ground_.normal * (0.3f * standComHeight_);
-      PlanTrunk(move, comGoal, {true, true}, true);
-      kneelStage_ = KneelStage::kSat;
-      return move;
-    }
-    case KneelStage::kSat: {
-      // The hands walk in, one at a time, to beside the knees.
-      const float ahead[2] = {HandsAhead(r, Limb::kHandLeft), HandsAhead(r, Limb::kHandRight)};
-      const int i = ahead[0] >= ahead[1] ? 0 : 1;
-      if (ahead[i] > kSquatHandsAhead + 0.05f) {
-        const Limb hand = static_cast<Limb>(i);
-        Move move = held("hand step", 0.8);
-        LimbMove& m = move.limbs[i] = HoldLimb(r, hand, false);
-        const glm::vec3 left = glm::normalize(glm::cross(kUp, heading_));
-        const float side = IsLeft(hand) ? 1.0f : -1.0f;
-        const float to = std::max(ahead[i] - kHandStep, kSquatHandsAhead);
-        const float outside = std::fabs(glm::dot(KneePoint(r, 2) - KneePoint(r, 3), left)) * 0.5f + 0.15f;
-        m.toRotation = PlantedHandRotation(hand);
-        m.to = WristAbove(hand, Project(ground_, toes + heading_ * to + left * side * outside), m.toRotation);
-        m.lift = HandSwingLift(hand);
-        m.span = 0.75f;
-        move.landing = i;
-        move.landingAfter = 0.4f;
-        const glm::vec3 comGoal = Project(ground_, glm::mix(knees, toes, 0.3f)) + ground_.normal * (0.3f * standComHeight_);
-        PlanTrunk(move, comGoal, {i != 0, i != 1}, true);
-        stepSpot_[i] = m.to;
-        return move;
-      }
-      // Up onto the toes: the knees leave the ground, the CoM between the toes and the hands.
-      Move move = OnAllFours(r, "knees up", 1.2);
-      for (int k = 2; k < 4; ++k) move.limbs[k] = ToePivot(r, static_cast<Limb>(k), glm::radians(60.0f));
-      const glm::vec3 hands = 0.5f * (ContactPoint(r, Limb::kHandLeft) + ContactPoint(r, Limb::kHandRight));
-      const glm::vec3 comGoal = Project(ground_, glm::mix(toes, hands, 0.3f)) + ground_.normal * (0.4f * standComHeight_);
-      PlanTrunk(move, comGoal, {true, true}, true);
-      kneelStage_ = KneelStage::kUp;
-      feetIn_ = true;
-      return move;
-    }
-    case KneelStage::kUp: break;
+bool RiseController::SolesDown(const BodyReading& r) const {
+  for (int i = 2; i < 4; ++i) {
+    if (glm::dot(r.jointRotations[rig_.end[i]] * kUp, ground_.normal) <= std::cos(kFlatSole)) return false;
   }
-  RISE_ASSERT_MSG(false, "PlanKneel after the knees are up");
-  return OnAllFours(r, "hold", 0.5);
+  return true;
 }
 
 RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
-  if (getenv("KNEEL") && kneelStage_ != KneelStage::kUp) {
-    // A hand step left short goes down first, where it was to land.
-    for (int i = 0; i < 2; ++i) {
-      if (kneelStage_ == KneelStage::kSat && Clearance(r, static_cast<Limb>(i)) > kLandedClearance) {
-        Move move = OnAllFours(r, "hand step", 0.6);
-        for (int k = 2; k < 4; ++k) move.limbs[k] = ToePivot(r, static_cast<Limb>(k), glm::radians(70.0f));
-        move.kneeling = true;
-        LimbMove& m = move.limbs[i] = HoldLimb(r, static_cast<Limb>(i), false);
-        glm::vec3 across = stepSpot_[i] ? *stepSpot_[i] - m.from : glm::vec3(0.0f);
-        across -= ground_.normal * glm::dot(across, ground_.normal);
-        m.to = m.from + across - ground_.normal * (Clearance(r, static_cast<Limb>(i)) + kLandingReach);
-        move.landing = i;
-        return move;
-      }
-    }
-    return PlanKneel(r);
+  const float comToFeet = FeetRegion(r).SignedDistance(Ground(r.com));
+  // The sit back hands over to the rise a little short of the soles: the
+  // rise's own balance takes the CoM the rest of the way.
+  if (comToFeet < -kRiseMargin || crawlSteps_ >= kMaxCrawlSteps || (move_.name == "sit back" && comToFeet < kSitBackReach)) {
+    return PlanRise(r);
   }
-  static const float pushBack = getenv("PB") ? atof(getenv("PB")) : -1.0f;
-  if (getenv("HOLDV") && FeetRegion(r).SignedDistance(Ground(r.com)) < -kRiseMargin &&
-      glm::length(Horizontal(r.comVelocity)) > static_cast<float>(atof(getenv("HOLDV")))) {
-    // Over the feet but still moving: the hands hold on until the body is still.
-    Move move = OnAllFours(r, "sit back", 0.3);
-    const glm::vec2 middle = FeetRegion(r).Centroid();
-    PlanTrunk(move, Project(ground_, glm::vec3(middle.x, 0.0f, middle.y)) + ground_.normal * Height(ground_, r.com), {true, true}, true);
-    return move;
-  }
-  if (FeetRegion(r).SignedDistance(Ground(r.com)) < -kRiseMargin || crawlSteps_ >= kMaxCrawlSteps ||
-      (move_.name == std::string("sit back") && FeetRegion(r).SignedDistance(Ground(r.com)) < pushBack)) return PlanRise(r);
-  if (getenv("FLATAT")) {
-    bool flat = true;
-    for (int i = 2; i < 4; ++i) flat = flat && glm::dot(r.jointRotations[rig_.end[i]] * kUp, ground_.normal) > std::cos(glm::radians(12.0f));
-    bool down = true;
-    for (int i = 0; i < kLimbCount; ++i) down = down && Clearance(r, static_cast<Limb>(i)) <= kLandedClearance;
-    const float ahead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
-    if (!flat && down && ahead <= static_cast<float>(atof(getenv("FLATAT")))) {
-      const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
+  const std::vector<Limb> candidates = StepCandidates(r);
+  if (candidates.empty()) {
+    const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
+    if (!SolesDown(r)) {
+      // Hands and feet are together. The heels come down first, the CoM held
+      // over the toe edges with the hands still bearing: on its toes a body
+      // whose CoM goes back past the toe edges can only fall back (nothing
+      // behind them can push it forward again), while a flat sole reaches
+      // back to the heel.
       Move move = OnAllFours(r, "heels down", 1.2);
       for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
-      const glm::vec3 comGoal = Project(ground_, toes + heading_ * 0.05f) + ground_.normal * (0.45f * standComHeight_);
-      PlanTrunk(move, comGoal, {true, true}, false);
-      if (getenv("DBG")) fprintf(stderr, "t=%.2f heels down at ahead %.2f reachable %d\n", r.time, ahead, (int)Reachable(move));
-      if (Reachable(move)) { ++crawlSteps_; return move; }
+      PlanTrunk(move, Project(ground_, toes) + ground_.normal * (kSquatComRatio * standComHeight_), {true, true});
+      ++crawlSteps_;
+      return move;
     }
-  }
-  const std::vector<Limb> candidates = getenv("HOLD") ? std::vector<Limb>{} : StepCandidates(r);
-  if (getenv("HOLD")) {
-    Move move = OnAllFours(r, "centre", 0.8);
-    PlanTrunk(move, r.com, {true, true}, true);
-    return move;
-  }
-  if (candidates.empty()) {
-    // Hands and feet are together: the CoM goes back over the toes, hips low,
-    // the hands still touching; the rise lets go of them once it is there.
-    const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
-    if (getenv("FLAT")) {
-      bool flat = true;
-      for (int i = 2; i < 4; ++i) flat = flat && glm::dot(r.jointRotations[rig_.end[i]] * kUp, ground_.normal) > std::cos(glm::radians(12.0f));
-      if (!flat) {
-        Move move = OnAllFours(r, "heels down", 1.2);
-        for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
-        const float ahead = static_cast<float>(atof(getenv("FLAT")));
-        const glm::vec3 comGoal = Project(ground_, toes + heading_ * ahead) + ground_.normal * (0.45f * standComHeight_);
-        PlanTrunk(move, comGoal, {true, true}, false);
-        ++crawlSteps_;
-        return move;
-      }
-    }
-    Move move = OnAllFours(r, "sit back", getenv("SBD") ? atof(getenv("SBD")) : 1.2);
-    const float behind = getenv("FLATBACK") ? static_cast<float>(atof(getenv("FLATBACK"))) : kSitBackBehindToes;
-    if (getenv("FLAT")) for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
-    const glm::vec3 comGoal = Project(ground_, toes - heading_ * behind) + ground_.normal * (0.45f * standComHeight_);
-    PlanTrunk(move, comGoal, {true, true}, !getenv("FLAT"));
+    // Then the CoM goes back over the flat soles, hips low, the hands still
+    // touching; the rise lets go of them once it is there.
+    Move move = OnAllFours(r, "sit back", 1.2);
+    for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
+    PlanTrunk(move, Project(ground_, toes - heading_ * kSitBackBehindSoles) + ground_.normal * (kSquatComRatio * standComHeight_),
+              {true, true});
     ++crawlSteps_;
-    if (getenv("DBG")) {
-      const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, GoalAt(move, 1.0f, BodyReading{}));
-      const glm::vec3 pc = PoseCom(pose);
-      fprintf(stderr, "t=%.2f sit back: goal (%.2f %.2f %.2f) planned (%.2f %.2f %.2f) measured fd %.3f reach %d handsAhead %.2f %.2f heel %.2f\n", r.time, comGoal.x, comGoal.y, comGoal.z, pc.x, pc.y, pc.z,
-        FeetRegion(r).SignedDistance(Ground(r.com)), (int)Reachable(move), HandsAhead(r, Limb::kHandLeft), HandsAhead(r, Limb::kHandRight), glm::degrees(std::acos(glm::dot(move.limbs[2].toRotation * kUp, kUp))));
-    }
     return move;
   }
   // The first candidate the CoM is balanced for steps; else the CoM shifts for
@@ -1299,11 +1148,10 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     Move move = OnAllFours(r, IsArm(limb) ? "hand step" : "foot step", 0.7);
     LimbMove& m = move.limbs[i] = HoldLimb(r, limb, false);
     if (IsArm(limb)) {
-      const float from = HandsAhead(r, limb);
-      const float to = std::max({from - kHandStep, kSquatHandsAhead, HandsAhead(r, OtherHand(limb)) - kHandStagger});
-      const float ahead = from - fraction * std::max(0.0f, from - to);
+      // (Hands only step to come down: StepCandidates.) Where it is along the
+      // heading, back beside the shoulder's line across it.
       const float side = IsLeft(limb) ? 1.0f : -1.0f;
-      const glm::vec3 spot = Project(ground_, FeetCentre(r) + heading_ * ahead + left * side * shoulderHalfWidth_ * 0.75f);
+      const glm::vec3 spot = Project(ground_, FeetCentre(r) + heading_ * HandsAhead(r, limb) + left * side * shoulderHalfWidth_ * 0.75f);
       m.toRotation = PlantedHandRotation(limb);
       m.to = WristAbove(limb, spot, m.toRotation);
       m.lift = HandSwingLift(limb);
@@ -1322,8 +1170,8 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       const Limb other = limb == Limb::kFootLeft ? Limb::kFootRight : Limb::kFootLeft;
       const float behindOther = glm::dot(r.jointPositions[rig_.end[static_cast<int>(other)]] - r.jointPositions[rig_.end[i]], heading_);
       nominalFootStep = std::clamp(std::min(handsAhead - kFootWalkDistance, behindOther + kFootLead), 0.05f, kFootStep);
-      if (getenv("NOHANDS") && handsAhead <= kFootWalkDistance + kMinFootStep) nominalFootStep = std::clamp(behindOther, 0.0f, kFootStep);
-      if (getenv("DBG") && candidate == 1.0f) fprintf(stderr, "  handsAhead %.3f behindOther %.3f\n", handsAhead, behindOther);
+      // In: the rear foot only comes up beside the other.
+      if (handsAhead <= kFootWalkDistance + kMinFootStep) nominalFootStep = std::clamp(behindOther, 0.0f, kFootStep);
       const float length = fraction * nominalFootStep;
       // From the ankle, not the toe: with no hip twist the foot's yaw follows the
       // leg, so its toe can sit to one side, and stepping from there walked
@@ -1334,28 +1182,19 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       // keep their own line splay apart step by step.
       const glm::vec3 hands = 0.5f * (ContactPoint(r, Limb::kHandLeft) + ContactPoint(r, Limb::kHandRight));
       const float side = IsLeft(limb) ? 1.0f : -1.0f;
-      const float halfStance = getenv("HS") ? kCrawlHalfStance : std::max(0.5f * static_cast<float>(spec_.style.stanceWidthM), kCrawlHalfStance);
-      const glm::vec3 across = left * (side * halfStance - glm::dot(toe - hands, left));
+      const glm::vec3 across = left * (side * kCrawlHalfStance - glm::dot(toe - hands, left));
       m.to = AnkleForToe(toe + heading_ * length + across, m.toRotation);
       m.lift = static_cast<float>(spec_.style.stepHeightM);
     }
-    if (!putDown && getenv("SPAN")) {
-      // The swing arrives early and the rest of the move waits for the
-      // servos' lag: the step ends when the limb is down.
-      m.span = static_cast<float>(atof(getenv("SPAN")));
-      move.landing = i;
-      move.landingAfter = 0.5f * m.span;
-    }
     // A limb being put down aims below the ground, but the trunk is planned
     // for it touching down there: reaching for the aim pulled the body over.
-    const float aimBelow = putDown && getenv("PDFIX") ? kLandingReach : 0.0f;
+    const float aimBelow = putDown ? kLandingReach : 0.0f;
     m.to += ground_.normal * aimBelow;
     PlanTrunk(move, IsArm(limb) ? r.com : FootLiftCom(r, limb), {limb != Limb::kHandLeft, limb != Limb::kHandRight});
     move.limbs[i].to -= ground_.normal * aimBelow;
     best = move;
     if (putDown || Reachable(move)) break;
   }
-  if (getenv("DBG")) fprintf(stderr, "t=%.2f step %d putDown=%d from=(%.2f %.2f) to=(%.2f %.2f) d=%.3f\n", r.time, i, putDown, best.limbs[i].from.x, best.limbs[i].from.z, best.limbs[i].to.x, best.limbs[i].to.z, glm::dot(best.limbs[i].to - best.limbs[i].from, heading_));
   if (!putDown) stepSpot_[i] = best.limbs[i].to;
   // The feet are as far in as this body bent at the hips lets them come: the
   // hands walk from here.
@@ -1469,14 +1308,6 @@ glm::vec3 RiseController::ContactPoint(const BodyReading& r, Limb limb) const {
   return Project(ground_, r.jointPositions[end] + rotation * box.center);
 }
 
-glm::vec3 RiseController::KneePoint(const BodyReading& r, int leg) const {
-  return Project(ground_, r.jointPositions[rig_.lower[leg]]);
-}
-
-bool RiseController::KneeDown(const BodyReading& r, int leg) const {
-  return Height(ground_, r.jointPositions[rig_.lower[leg]]) < kneelHeight_ + kLandedClearance;
-}
-
 glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb, const glm::vec3& pressure) const {
   const int end = rig_.end[static_cast<int>(limb)];
   const glm::quat rotation = r.jointRotations[end];
@@ -1499,72 +1330,74 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
   // lying, the trunk rests on the ground and needs no help.
   if (phase_ == RisePhase::kSettle || phase_ == RisePhase::kRoll || phase_ == RisePhase::kPlace || !hasMove_) return;
 
-  // Share the weight among planted, touching supports (hands, feet, and knees
-  // resting on the ground): the least-norm weights whose weighted centre is
-  // the CoM's ground projection, negatives dropped.
-  struct Support {
-    int body;         // the skeleton joint whose box the ground pushes
-    glm::vec3 point;  // where
-    float share = 0.0f;
-  };
+  const glm::vec3 gravity(0.0f, -9.81f, 0.0f);
+  // Phase 2 balances on the feet alone: the ground's push is aimed so the CoM
+  // accelerates toward the balance point. For an inverted pendulum that push
+  // presses at the centre of pressure h a / g behind the CoM's ground point
+  // (a the wanted acceleration, h the CoM's height), inside the feet. Pressing
+  // right below the CoM instead only holds the weight: a body drifting off
+  // the balance point at the end of a rise kept drifting until it fell.
   glm::vec3 pressure = r.com, balanceForce(0.0f);
-  if ((phase_ == RisePhase::kRise || phase_ == RisePhase::kStand) && getenv("COP")) {
-    static const float kp = getenv("COPK") ? static_cast<float>(atof(getenv("COPK"))) : 9.0f;
-    static const float kd = getenv("COPD") ? static_cast<float>(atof(getenv("COPD"))) : 6.0f;
-    glm::vec3 accel = kp * (BalancePoint(r) - r.com) - kd * r.comVelocity;
+  if (phase_ == RisePhase::kRise || phase_ == RisePhase::kStand) {
+    glm::vec3 accel = kBalanceStiffness * (BalancePoint(r) - r.com) - kBalanceDamping * r.comVelocity;
     accel -= ground_.normal * glm::dot(accel, ground_.normal);
     const glm::vec2 wanted = Ground(r.com - accel * (Height(ground_, r.com) / 9.81f));
     const SupportPolygon feet = FeetRegion(r);
     const glm::vec2 cop = feet.SignedDistance(wanted) < 0.0f ? wanted : feet.Closest(wanted);
     pressure = Project(ground_, glm::vec3(cop.x, 0.0f, cop.y));
+    // The horizontal push that goes with that pressure point (clipped to the
+    // feet, it may be less than wanted): m g / h times the CoM's offset from it.
     balanceForce = totalMass_ * 9.81f / std::max(0.2f, Height(ground_, r.com)) * Horizontal(r.com - pressure);
     balanceForce -= ground_.normal * glm::dot(balanceForce, ground_.normal);
   }
-  std::vector<Support> supports;
+  // Share the weight among planted, touching supports: the least-norm weights
+  // whose weighted centre is the pressure point, negatives dropped.
+  std::array<glm::vec3, kLimbCount> point{};
+  std::array<float, kLimbCount> share{};
+  std::vector<int> supports;
   for (int i = 0; i < kLimbCount; ++i) {
-    if (planted_[i] && r.touching[i]) supports.push_back({rig_.end[i], SupportPoint(r, static_cast<Limb>(i), pressure)});
-  }
-  for (int leg = 2; leg < 4; ++leg) {
-    if (move_.kneeling && KneeDown(r, leg)) supports.push_back({rig_.lower[leg], KneePoint(r, leg)});
+    if (!planted_[i] || !r.touching[i]) continue;
+    point[i] = SupportPoint(r, static_cast<Limb>(i), pressure);
+    supports.push_back(i);
   }
   if (supports.empty()) return;
   const glm::vec2 c = Ground(pressure);
   for (int pass = 0; pass < 3; ++pass) {
     // Solve A A^T y = b, w = A^T y with A = [1; x; z] over the supports.
     glm::mat3 normal(0.0f);
-    for (const Support& support : supports) {
-      const glm::vec3 a(1.0f, support.point.x, support.point.z);
+    for (int i : supports) {
+      const glm::vec3 a(1.0f, point[i].x, point[i].z);
       normal += glm::outerProduct(a, a);
     }
     const float det = glm::determinant(normal);
+    bool clipped = false;
     if (std::fabs(det) > 1e-8f) {
       const glm::vec3 y = glm::inverse(normal) * glm::vec3(1.0f, c.x, c.y);
-      for (Support& support : supports) support.share = glm::dot(y, glm::vec3(1.0f, support.point.x, support.point.z));
+      for (int i : supports) share[i] = glm::dot(y, glm::vec3(1.0f, point[i].x, point[i].z));
     } else {
-      for (Support& support : supports) support.share = 1.0f / static_cast<float>(supports.size());
+      for (int i : supports) share[i] = 1.0f / static_cast<float>(supports.size());
     }
-    const size_t before = supports.size();
-    supports.erase(std::remove_if(supports.begin(), supports.end(), [](const Support& support) { return support.share < 0.0f; }),
-                   supports.end());
-    if (supports.size() == before || supports.empty()) break;
+    for (size_t k = 0; k < supports.size();) {
+      if (share[supports[k]] < 0.0f) share[supports[k]] = 0.0f, supports.erase(supports.begin() + k), clipped = true;
+      else ++k;
+    }
+    if (!clipped || supports.empty()) break;
   }
   float total = 0.0f;
-  for (const Support& support : supports) total += support.share;
+  for (int i : supports) total += share[i];
   if (total <= 0.0f) return;
-  const glm::vec3 gravity(0.0f, -9.81f, 0.0f);
+  std::array<glm::vec3, kLimbCount> force{};
   // On hands and feet, a virtual force on the CoM (Coros et al. 2010) pulls it
   // toward the plan's CoM: a spring-damper shared among the supports like the
   // weight, its ground forces turned into joint torques with the rest.
   glm::vec3 virtualForce = balanceForce;
-  static const float vfRise = getenv("VFRISE") ? atof(getenv("VFRISE")) : 0.0f;
-  if (OnHandsAndFeet(phase_) || (vfRise > 0.0f && (phase_ == RisePhase::kRise || phase_ == RisePhase::kStand))) {
-    const float gain = OnHandsAndFeet(phase_) ? 1.0f : vfRise;
-    virtualForce = gain * totalMass_ * (kVirtualStiffness * (comGoal - r.com) - kVirtualDamping * r.comVelocity);
+  if (OnHandsAndFeet(phase_)) {
+    virtualForce = totalMass_ * (kVirtualStiffness * (comGoal - r.com) - kVirtualDamping * r.comVelocity);
     virtualForce -= ground_.normal * glm::dot(virtualForce, ground_.normal);
     const float limit = kMaxVirtualForce * totalMass_ * 9.81f;
     if (glm::length(virtualForce) > limit) virtualForce *= limit / glm::length(virtualForce);
   }
-  const glm::vec3 load = virtualForce - gravity * totalMass_;
+  for (int i : supports) force[i] = (virtualForce - gravity * totalMass_) * (share[i] / total);
 
   for (int j = 1; j < sk.JointCount(); ++j) {
     if (!sk.joints[j].hasBox) continue;
@@ -1574,8 +1407,8 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
       if (!sk.joints[s].hasBox) continue;
       const glm::vec3 centre = r.jointPositions[s] + r.jointRotations[s] * sk.joints[s].box.center;
       torque -= glm::cross(centre - pivot, gravity * def_.bones[s].massKg);
-      for (const Support& support : supports) {
-        if (support.body == s && support.share > 0.0f) torque -= glm::cross(support.point - pivot, load * (support.share / total));
+      for (int i = 0; i < kLimbCount; ++i) {
+        if (rig_.end[i] == s && glm::length(force[i]) > 0.0f) torque -= glm::cross(point[i] - pivot, force[i]);
       }
     }
     out[j] = torque;
@@ -1642,14 +1475,10 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
       const float limit = 0.05f;
       if (glm::length(balanceOffset_) > limit) balanceOffset_ *= limit / glm::length(balanceOffset_);
     }
-    // Sitting back ends as soon as the CoM is over the feet and slow: carried on,
-    // it would keep going back past the heels.
-    if (getenv("SBEND") && move_.name == std::string("sit back") &&
-        FeetRegion(reading).SignedDistance(Ground(reading.com)) < -kRiseMargin &&
-        glm::length(Horizontal(reading.comVelocity)) < static_cast<float>(atof(getenv("SBEND")))) {
-      progress_ = 1.0f;
-    }
-    if (move_.landing >= 0 && progress_ > move_.landingAfter && reading.touching[move_.landing] &&
+    // Sitting back ends as soon as the CoM is over the feet: carried on, it
+    // would keep going back past the heels.
+    if (move_.name == "sit back" && FeetRegion(reading).SignedDistance(Ground(reading.com)) < -kRiseMargin) progress_ = 1.0f;
+    if (move_.landing >= 0 && reading.touching[move_.landing] &&
         Clearance(reading, static_cast<Limb>(move_.landing)) < kLandedClearance) {
       progress_ = 1.0f;
     }
@@ -1690,24 +1519,10 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
     out.local = LocalRotations(def_.skeleton, pose.worldRotations);
     // The plan's CoM is only needed for the virtual force on hands and feet.
-    const glm::vec3 comGoal = OnHandsAndFeet(phase_) ? PoseCom(GoalAt(move_, progress_, reading, false))
-                              : getenv("VFRISE") ? PoseCom(GoalAt(move_, progress_, reading, true)) : reading.com;
+    const glm::vec3 comGoal = OnHandsAndFeet(phase_) ? PoseCom(GoalAt(move_, progress_, reading, false)) : reading.com;
     FeedForward(reading, comGoal, out.feedForward);
     for (int i = 0; i < 2; ++i) {
       if (planted_[i]) out.gainScale[rig_.end[i]] = kPlantedWristGain;
-    }
-    if (getenv("ANK") && OnHandsAndFeet(phase_)) {
-      for (int i = 2; i < 4; ++i) {
-        if (planted_[i]) out.gainScale[rig_.end[i]] = static_cast<float>(atof(getenv("ANK")));
-        if (planted_[i] && getenv("KNEE")) out.gainScale[rig_.lower[i]] = static_cast<float>(atof(getenv("KNEE")));
-      }
-    }
-    if (getenv("DBG2") && move_.name == std::string("foot step")) {
-      for (int i = 2; i < 4; ++i) if (!planted_[i]) {
-        const glm::vec3 a = reading.jointPositions[rig_.end[i]], t = goal.limbs[i].target, pa = reading.jointPositions[rig_.pelvis];
-        const glm::vec3 ps = pose.worldPositions[rig_.end[i]];
-        fprintf(stderr, "t=%.3f s=%.2f leg%d tgt=(%.2f %.2f %.2f) ik=(%.2f %.2f %.2f) act=(%.2f %.2f %.2f) pelvis goal=(%.2f %.2f %.2f) act=(%.2f %.2f %.2f) touch=%d\n", reading.time, progress_, i, t.x,t.y,t.z, ps.x,ps.y,ps.z, a.x,a.y,a.z, goal.pelvisPosition.x, goal.pelvisPosition.y, goal.pelvisPosition.z, pa.x,pa.y,pa.z, (int)reading.touching[i]);
-      }
     }
     trace_.comGoal = PoseCom(goal);
     for (int i = 0; i < kLimbCount; ++i) trace_.limbTargets[i] = goal.limbs[i].target;

@@ -108,9 +108,7 @@ class RiseController {
     std::array<LimbMove, kLimbCount> limbs;
     bool keepComOverFeet = false;     // re-centre the pelvis so the CoM stays over the feet
     std::array<std::array<float, 2>, 2> legPitches{};  // rising: each leg's shin and thigh pitch at the start
-    bool kneeling = false;            // the knees rest on the ground: planned there, and supports
     int landing = -1;                 // a limb being put down: the move ends when it touches
-    float landingAfter = 0.0f;        // ... once progress is past this (a step lifts off first)
     float rolledTo = 0.0f;            // rolling: the move ends once the pelvis has turned this far (RollAngle), rad
   };
 
@@ -130,10 +128,8 @@ class RiseController {
   Move PlanPlace(const BodyReading& reading);
   Move PlanPush(const BodyReading& reading);
   Move PlanCrawl(const BodyReading& reading);
-  Move PlanKneel(const BodyReading& reading);
-  // A knee resting on the ground: where it presses, and whether it is down.
-  glm::vec3 KneePoint(const BodyReading& reading, int leg) const;
-  bool KneeDown(const BodyReading& reading, int leg) const;
+  // Both soles flat on the ground.
+  bool SolesDown(const BodyReading& reading) const;
   // A move that puts the CoM inside the support of all limbs but `lifted`, if
   // a reachable pose does.
   std::optional<Move> PlanShift(const BodyReading& reading, Limb lifted) const;
@@ -222,7 +218,6 @@ class RiseController {
   float armReach_ = 0.0f, legReach_ = 0.0f, standPelvisHeight_ = 0.0f;
   float standComHeight_ = 0.0f, crawlComHeight_ = 0.0f, shoulderHalfWidth_ = 0.0f;
   glm::vec3 toeLocal_{0.0f};  // middle of the foot's toe edge, in the foot frame
-  float kneelHeight_ = 0.0f;  // of the knee joint above the ground when kneeling
 
   RisePhase phase_ = RisePhase::kSettle;
   Move move_;
@@ -238,10 +233,6 @@ class RiseController {
   int crawlSteps_ = 0;
   int shiftTries_ = 0;
   bool feetIn_ = false;  // the feet have come in as far as they can
-  // Phase 1 by way of the knees: down onto them from hands and feet, sit back
-  // over them, walk the hands in, up onto the toes.
-  enum class KneelStage { kNone, kKneel, kSat, kUp };
-  KneelStage kneelStage_ = KneelStage::kNone;
   // Where each limb's last step was to land: a swing the servos leave short
   // is finished by putting the limb down there, not where it hangs.
   std::array<std::optional<glm::vec3>, kLimbCount> stepSpot_{};
