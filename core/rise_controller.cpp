@@ -784,7 +784,9 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       LimbMove foot = HoldLimb(r, farLeg, false);
       foot.toRotation = FootRotation(-heading_, 0.0f);
       foot.to = AnkleForToe(toe, foot.toRotation);
-      foot.lift = static_cast<float>(spec_.style.stepHeightM);
+      // Drawn up from lying on its heel, the foot turns its sole down on the
+      // way, so the heel sweeps well below the ankle: twice a step's lift.
+      foot.lift = 2.0f * static_cast<float>(spec_.style.stepHeightM);
       set(farLeg, foot);
       set(nearArm, RollLimb(r, nearArm, {90, 20, 10, 0, 0}));
       set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
