@@ -250,9 +250,10 @@ TEST_CASE("roll: from the back or a side the body rolls onto its front and the p
   }
 }
 
-// Known to fail: the lifted swings keep the arms and the top leg off the
-// ground, but the bottom leg, which the body rolls over, and the far foot
-// drawn up for the tuck still slide 10-30 cm. Drop may_fail once they do not.
+// Known to fail: the lifted swings keep most hands and feet off the ground
+// while they move, but the bottom leg, which the body rolls over, the arm
+// overhead and the top hand once it has come down still slide 10-30 cm while
+// the body turns on over them. Drop may_fail once they do not.
 TEST_CASE("roll: a hand or foot on the ground does not drag along it while the body turns over" * doctest::may_fail()) {
   // The clip's contact-slip bar, on the roll alone: contacts up to the first
   // step of place (the prone path from there on is not the roll's).
