@@ -497,6 +497,9 @@ void RiseController::EvaluateLimb(const LimbMove& limb, Limb which, float s, con
                    upper * def_.skeleton.joints[rig_.lower[i]].restOffset +
                    lower * def_.skeleton.joints[rig_.end[i]].restOffset;
       out.endRotation = glm::normalize(lower * rotation);
+      // The lift rises early and holds, so a limb leaves the ground before the
+      // swing has carried it far along it.
+      out.target += ground_.normal * (limb.lift * std::min(1.0f, 8.0f * u * (1.0f - u)));
       break;
     }
   }
@@ -763,6 +766,11 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   move.phase = RisePhase::kRoll;
   move.from = MeasuredTrunk(r);
   auto set = [&](Limb limb, const LimbMove& m) { move.limbs[static_cast<int>(limb)] = m; };
+  auto swing = [&](Limb limb, const std::array<float, 5>& anglesDeg) {
+    LimbMove m = RollLimb(r, limb, anglesDeg);
+    m.lift = static_cast<float>(spec_.style.stepHeightM);
+    return m;
+  };
   // The arm on the roll side goes overhead so the body rolls over the
   // shoulder instead of onto the arm.
   set(nearArm, RollLimb(r, nearArm, {165, 15, 10, 0, 0}));
@@ -781,7 +789,9 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       LimbMove foot = HoldLimb(r, farLeg, false);
       foot.toRotation = FootRotation(-heading_, 0.0f);
       foot.to = AnkleForToe(toe, foot.toRotation);
-      foot.lift = static_cast<float>(spec_.style.stepHeightM);
+      // Drawn up from lying on its heel, the foot turns its sole down on the
+      // way, so the heel sweeps well below the ankle: twice a step's lift.
+      foot.lift = 2.0f * static_cast<float>(spec_.style.stepHeightM);
       set(farLeg, foot);
       set(nearArm, RollLimb(r, nearArm, {90, 20, 10, 0, 0}));
       set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
@@ -807,8 +817,8 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       move.duration = 0.9;
       const bool pushing = planted_[static_cast<int>(farLeg)];
       move.to = RolledTrunk(r, 0.0f, glm::radians(pushing ? 65.0f : 30.0f));
-      set(farArm, RollLimb(r, farArm, {45, 45, 90, 0, 0}));
-      set(farLeg, pushing ? HoldLimb(r, farLeg, true) : RollLimb(r, farLeg, {40, -10, 60, -20, 0}));
+      set(farArm, swing(farArm, {45, 45, 90, 0, 0}));
+      set(farLeg, pushing ? HoldLimb(r, farLeg, true) : swing(farLeg, {40, -10, 60, -20, 0}));
       break;
     }
     case RollStage::kLie:
@@ -820,8 +830,8 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       move.name = "lie";
       move.duration = 0.6;
       move.to = RolledTrunk(r, 0.0f, 0.0f);
-      set(farArm, RollLimb(r, farArm, {20, 20, 60, 0, 0}));
-      set(nearArm, RollLimb(r, nearArm, {165, 60, 10, 0, 0}));
+      set(farArm, swing(farArm, {20, 20, 60, 0, 0}));
+      set(nearArm, swing(nearArm, {165, 60, 10, 0, 0}));
       set(nearLeg, RollLimb(r, nearLeg, {0, 0, 5, -50, 0}));
       set(farLeg, RollLimb(r, farLeg, {0, 0, 5, -50, 0}));
       break;
