@@ -39,8 +39,8 @@ constexpr float kShiftMargin = 0.06f;  // m
 constexpr int kMaxShiftTries = 2;
 constexpr float kHandLineMargin = 0.15f;  // m the CoM stays behind the hands on hands and feet
 constexpr float kReachTolerance = 0.01f;  // m a planned limb may miss its place by
-constexpr float kLandedClearance = 0.02f;
-constexpr float kLandingReach = 0.1f;  // m below the ground a limb being put down aims  // m above the ground a placed hand or foot counts as down
+constexpr float kLandedClearance = 0.02f;  // m above the ground a placed hand or foot counts as down
+constexpr float kLandingReach = 0.1f;      // m below the ground a limb being put down aims
 // Phase 2 starts once the CoM's ground projection is this far inside the feet.
 constexpr float kRiseMargin = 0.02f;  // m
 // Crawl geometry: how far a hand moves per step, and how far ahead of the feet
