@@ -661,19 +661,21 @@ bool RiseController::OnItsFeet(const BodyReading& r) {
 
 bool RiseController::Fallen(const BodyReading& r) const {
   const float pelvisHeight = Height(ground_, r.jointPositions[rig_.pelvis]);
+  // Built only when the cheap tests have not decided: this runs every step.
+  auto comToFeet = [&] { return FeetRegion(r).SignedDistance(Ground(r.com)); };
   if (phase_ == RisePhase::kCrawl) {
     // Down on the ground again (sitting or lying) with the hands and feet no longer bearing.
     // (Squatting on both feet with the CoM over them is not down: it is where the crawl ends.)
     const int bearing = static_cast<int>(std::count(r.touching.begin(), r.touching.end(), true));
-    const bool onFeet = r.touching[2] && r.touching[3] && FeetRegion(r).SignedDistance(Ground(r.com)) < 0.0f;
-    return pelvisHeight < 0.22f * standPelvisHeight_ && bearing < 3 && !onFeet;
+    if (pelvisHeight >= 0.22f * standPelvisHeight_ || bearing >= 3) return false;
+    return !(r.touching[2] && r.touching[3] && comToFeet() < 0.0f);
   }
   if (phase_ != RisePhase::kRise && phase_ != RisePhase::kStand) return false;
+  if (pelvisHeight < 0.25f * standPelvisHeight_) return true;
   // A chest folded over the knees is how a rise from a squat starts (and what
   // OnItsFeet accepts): down only with the CoM off the feet as well.
   const glm::vec3 up = r.jointRotations[rig_.chest] * kUp;
-  const bool offFeet = FeetRegion(r).SignedDistance(Ground(r.com)) > 0.05f;
-  return pelvisHeight < 0.25f * standPelvisHeight_ || (offFeet && glm::dot(up, kUp) < std::cos(glm::radians(70.0f)));
+  return glm::dot(up, kUp) < std::cos(glm::radians(70.0f)) && comToFeet() > 0.05f;
 }
 
 void RiseController::PlanNext(const BodyReading& reading) {
