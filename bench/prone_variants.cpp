@@ -5,7 +5,7 @@
 // how close the feet came to the hands, and the time spent in each move.
 //
 //   prone_variants [count] [only] [posture]
-//   env: DUR (max_duration_s, 20), SPEED (style.speed, 1), TRACE=file (JSON lines of `only`),
+//   env: DUR (max_duration_s, 20), SPEED (style.speed, 1), FRIC (terrain.friction, 0.8), TRACE=file (JSON lines of `only`),
 //        OUT=dir (dir/v.glb of `only`)
 #include "core/clip_output.h"
 #include "core/generate.h"
@@ -30,9 +30,9 @@ int main(int argc, char** argv) {
     char text[512];
     std::snprintf(text, sizeof text,
                   "{\"character\":{\"height_m\":%.2f,\"mass_kg\":%.0f},\"start\":{\"posture\":\"%s\",\"heading_deg\":%d},"
-                  "\"seed\":%d,\"max_duration_s\":%s,\"style\":{\"speed\":%s}}",
+                  "\"seed\":%d,\"max_duration_s\":%s,\"style\":{\"speed\":%s},\"terrain\":{\"friction\":%s}}",
                   height, mass, posture.c_str(), (k * 37) % 360, k + 1, std::getenv("DUR") ? std::getenv("DUR") : "20",
-                  std::getenv("SPEED") ? std::getenv("SPEED") : "1");
+                  std::getenv("SPEED") ? std::getenv("SPEED") : "1", std::getenv("FRIC") ? std::getenv("FRIC") : "0.8");
     const auto spec = rise::ParseRiseSpec(text, "variant.json");
     if (!spec) {
       std::printf("%2d: %s\n", k, spec.Error().Format().c_str());
