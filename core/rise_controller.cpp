@@ -83,6 +83,10 @@ constexpr float kMaxCrawlOffset = 0.06f;  // m
 constexpr float kVirtualStiffness = 12.0f;  // 1/s^2
 constexpr float kVirtualDamping = 7.0f;     // 1/s
 constexpr float kMaxVirtualForce = 0.25f;
+// Phase 2's ankle strategy: the CoM's wanted acceleration toward the balance
+// point, per m of offset and per m/s (omega 3 rad/s, critically damped).
+constexpr float kBalanceStiffness = 9.0f;  // 1/s^2
+constexpr float kBalanceDamping = 6.0f;    // 1/s
 constexpr float kMaxBalanceSlide = 0.1f;  // m the pelvis may slide from its planned place
 constexpr float kMaxBalanceLean = 1.2f;   // rad the trunk may lean forward of its plan
 constexpr float kLeanRate = 0.8f;         // rad/s the balance lean may change
@@ -1230,18 +1234,18 @@ glm::vec3 RiseController::ContactPoint(const BodyReading& r, Limb limb) const {
   return Project(ground_, r.jointPositions[end] + rotation * box.center);
 }
 
-glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb) const {
+glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb, const glm::vec3& pressure) const {
   const int end = rig_.end[static_cast<int>(limb)];
   const glm::quat rotation = r.jointRotations[end];
   if (IsArm(limb) || glm::dot(rotation * kUp, ground_.normal) < std::cos(glm::radians(10.0f))) return ContactPoint(r, limb);
-  // A flat foot is to press right below the CoM, along its length: where the
-  // force must act for the body to balance. (Where it presses now would be
+  // A flat foot is to press along its length at the wanted pressure point:
+  // where the force must act for the body to balance. (Where it presses now would be
   // wrong: tipping back, the pressure moves to the heel, and feeding that
   // forward would take away the ankle torque that stops the tipping.)
   const BoneBox& box = def_.skeleton.joints[end].box;
   const glm::vec3 centre = r.jointPositions[end] + rotation * box.center;
   const glm::vec3 along = rotation * glm::vec3(0.0f, 0.0f, 1.0f);
-  const float offset = std::clamp(glm::dot(r.com - centre, along), -box.halfExtents.z, box.halfExtents.z);
+  const float offset = std::clamp(glm::dot(pressure - centre, along), -box.halfExtents.z, box.halfExtents.z);
   return Project(ground_, centre + along * offset);
 }
 
@@ -1252,18 +1256,38 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
   // lying, the trunk rests on the ground and needs no help.
   if (phase_ == RisePhase::kSettle || phase_ == RisePhase::kRoll || phase_ == RisePhase::kPlace || !hasMove_) return;
 
+  const glm::vec3 gravity(0.0f, -9.81f, 0.0f);
+  // Phase 2 balances on the feet alone: the ground's push is aimed so the CoM
+  // accelerates toward the balance point. For an inverted pendulum that push
+  // presses at the centre of pressure h a / g behind the CoM's ground point
+  // (a the wanted acceleration, h the CoM's height), inside the feet. Pressing
+  // right below the CoM instead only holds the weight: a body drifting off
+  // the balance point at the end of a rise kept drifting until it fell.
+  glm::vec3 pressure = r.com, balanceForce(0.0f);
+  if (phase_ == RisePhase::kRise || phase_ == RisePhase::kStand) {
+    glm::vec3 accel = kBalanceStiffness * (BalancePoint(r) - r.com) - kBalanceDamping * r.comVelocity;
+    accel -= ground_.normal * glm::dot(accel, ground_.normal);
+    const glm::vec2 wanted = Ground(r.com - accel * (Height(ground_, r.com) / 9.81f));
+    const SupportPolygon feet = FeetRegion(r);
+    const glm::vec2 cop = feet.SignedDistance(wanted) < 0.0f ? wanted : feet.Closest(wanted);
+    pressure = Project(ground_, glm::vec3(cop.x, 0.0f, cop.y));
+    // The horizontal push that goes with that pressure point (clipped to the
+    // feet, it may be less than wanted): m g / h times the CoM's offset from it.
+    balanceForce = totalMass_ * 9.81f / std::max(0.2f, Height(ground_, r.com)) * Horizontal(r.com - pressure);
+    balanceForce -= ground_.normal * glm::dot(balanceForce, ground_.normal);
+  }
   // Share the weight among planted, touching supports: the least-norm weights
-  // whose weighted centre is the CoM's ground projection, negatives dropped.
+  // whose weighted centre is the pressure point, negatives dropped.
   std::array<glm::vec3, kLimbCount> point{};
   std::array<float, kLimbCount> share{};
   std::vector<int> supports;
   for (int i = 0; i < kLimbCount; ++i) {
     if (!planted_[i] || !r.touching[i]) continue;
-    point[i] = SupportPoint(r, static_cast<Limb>(i));
+    point[i] = SupportPoint(r, static_cast<Limb>(i), pressure);
     supports.push_back(i);
   }
   if (supports.empty()) return;
-  const glm::vec2 c = Ground(r.com);
+  const glm::vec2 c = Ground(pressure);
   for (int pass = 0; pass < 3; ++pass) {
     // Solve A A^T y = b, w = A^T y with A = [1; x; z] over the supports.
     glm::mat3 normal(0.0f);
@@ -1288,12 +1312,11 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
   float total = 0.0f;
   for (int i : supports) total += share[i];
   if (total <= 0.0f) return;
-  const glm::vec3 gravity(0.0f, -9.81f, 0.0f);
   std::array<glm::vec3, kLimbCount> force{};
   // On hands and feet, a virtual force on the CoM (Coros et al. 2010) pulls it
   // toward the plan's CoM: a spring-damper shared among the supports like the
   // weight, its ground forces turned into joint torques with the rest.
-  glm::vec3 virtualForce(0.0f);
+  glm::vec3 virtualForce = balanceForce;
   if (OnHandsAndFeet(phase_)) {
     virtualForce = totalMass_ * (kVirtualStiffness * (comGoal - r.com) - kVirtualDamping * r.comVelocity);
     virtualForce -= ground_.normal * glm::dot(virtualForce, ground_.normal);
