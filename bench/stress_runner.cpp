@@ -9,7 +9,8 @@
 //   - the simulation stayed healthy (the engine's non-finite / exploded-speed flags never set);
 //   - every recorded joint position and rotation is finite;
 //   - a clip that can be measured (MeasureClip, as `rise-gen check`);
-//   - a result: stood, or a "did not stand" outcome with its last phase, at or before max_duration_s.
+//   - a result: stood, or a "did not stand" outcome (its last phase, or the falls after the last
+//     retry), at or before max_duration_s.
 // and the two physical bounds:
 //   - no body (box centre) moves faster than kMaxBodySpeed between two steps;
 //   - no box vertex goes deeper than kMaxPenetration below the ground (the slope plane).
@@ -180,8 +181,10 @@ RunResult Run(uint64_t seed, double maxDuration) {
                                       quality.penetrationFrame / kRecordFps));
     }
   }
-  const bool didNotStand =
-      run.outcome.rfind("did not stand within", 0) == 0 && run.outcome.find("last phase") != std::string::npos;
+  // Either ran to max_duration_s ("... within T s (last phase: P)") or fell after its last retry
+  // and came to rest ("...: fell N times, at rest at T s").
+  const bool didNotStand = run.outcome.rfind("did not stand", 0) == 0 &&
+                           (run.outcome.find("last phase") != std::string::npos || run.outcome.find("fell") != std::string::npos);
   if (generated.health.ok && (run.stood ? run.timeToStand < 0.0 : !didNotStand)) {
     run.violations.push_back("no clear result: outcome \"" + run.outcome + "\"");
   }
@@ -196,6 +199,7 @@ RunResult Run(uint64_t seed, double maxDuration) {
 std::string OutcomeKind(const RunResult& run) {
   if (!run.violations.empty()) return "health violation";
   if (run.stood) return "stood";
+  if (run.outcome.find("fell") != std::string::npos) return "did not stand (fell after its last retry)";
   const size_t phase = run.outcome.find("(last phase:");
   return phase == std::string::npos ? run.outcome : "did not stand " + run.outcome.substr(phase);
 }

@@ -521,6 +521,9 @@ void RiseController::EvaluateLimb(const LimbMove& limb, Limb which, float s, con
                    upper * def_.skeleton.joints[rig_.lower[i]].restOffset +
                    lower * def_.skeleton.joints[rig_.end[i]].restOffset;
       out.endRotation = glm::normalize(lower * rotation);
+      // The lift rises early and holds, so a limb leaves the ground before the
+      // swing has carried it far along it.
+      out.target += ground_.normal * (limb.lift * std::min(1.0f, 8.0f * u * (1.0f - u)));
       break;
     }
   }
@@ -682,19 +685,21 @@ bool RiseController::OnItsFeet(const BodyReading& r) {
 
 bool RiseController::Fallen(const BodyReading& r) const {
   const float pelvisHeight = Height(ground_, r.jointPositions[rig_.pelvis]);
+  // Built only when the cheap tests have not decided: this runs every step.
+  auto comToFeet = [&] { return FeetRegion(r).SignedDistance(Ground(r.com)); };
   if (phase_ == RisePhase::kCrawl) {
     // Down on the ground again (sitting or lying) with the hands and feet no longer bearing.
     // (Squatting on both feet with the CoM over them is not down: it is where the crawl ends.)
     const int bearing = static_cast<int>(std::count(r.touching.begin(), r.touching.end(), true));
-    const bool onFeet = r.touching[2] && r.touching[3] && FeetRegion(r).SignedDistance(Ground(r.com)) < 0.0f;
-    return pelvisHeight < 0.22f * standPelvisHeight_ && bearing < 3 && !onFeet;
+    if (pelvisHeight >= 0.22f * standPelvisHeight_ || bearing >= 3) return false;
+    return !(r.touching[2] && r.touching[3] && comToFeet() < 0.0f);
   }
   if (phase_ != RisePhase::kRise && phase_ != RisePhase::kStand) return false;
-  // A chest folded over the knees is how a rise from a squat starts: down only
-  // with the CoM off the feet as well.
+  if (pelvisHeight < 0.25f * standPelvisHeight_) return true;
+  // A chest folded over the knees is how a rise from a squat starts (and what
+  // OnItsFeet accepts): down only with the CoM off the feet as well.
   const glm::vec3 up = r.jointRotations[rig_.chest] * kUp;
-  const bool offFeet = FeetRegion(r).SignedDistance(Ground(r.com)) > 0.05f;
-  return pelvisHeight < 0.25f * standPelvisHeight_ || (offFeet && glm::dot(up, kUp) < std::cos(glm::radians(70.0f)));
+  return glm::dot(up, kUp) < std::cos(glm::radians(70.0f)) && comToFeet() > 0.05f;
 }
 
 void RiseController::PlanNext(const BodyReading& reading) {
@@ -787,6 +792,11 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   move.phase = RisePhase::kRoll;
   move.from = MeasuredTrunk(r);
   auto set = [&](Limb limb, const LimbMove& m) { move.limbs[static_cast<int>(limb)] = m; };
+  auto swing = [&](Limb limb, const std::array<float, 5>& anglesDeg) {
+    LimbMove m = RollLimb(r, limb, anglesDeg);
+    m.lift = static_cast<float>(spec_.style.stepHeightM);
+    return m;
+  };
   // The arm on the roll side goes overhead so the body rolls over the
   // shoulder instead of onto the arm.
   set(nearArm, RollLimb(r, nearArm, {165, 15, 10, 0, 0}));
@@ -805,7 +815,9 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       LimbMove foot = HoldLimb(r, farLeg, false);
       foot.toRotation = FootRotation(-heading_, 0.0f);
       foot.to = AnkleForToe(toe, foot.toRotation);
-      foot.lift = static_cast<float>(spec_.style.stepHeightM);
+      // Drawn up from lying on its heel, the foot turns its sole down on the
+      // way, so the heel sweeps well below the ankle: twice a step's lift.
+      foot.lift = 2.0f * static_cast<float>(spec_.style.stepHeightM);
       set(farLeg, foot);
       set(nearArm, RollLimb(r, nearArm, {90, 20, 10, 0, 0}));
       set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
@@ -831,8 +843,8 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       move.duration = 0.9;
       const bool pushing = planted_[static_cast<int>(farLeg)];
       move.to = RolledTrunk(r, 0.0f, glm::radians(pushing ? 65.0f : 30.0f));
-      set(farArm, RollLimb(r, farArm, {45, 45, 90, 0, 0}));
-      set(farLeg, pushing ? HoldLimb(r, farLeg, true) : RollLimb(r, farLeg, {40, -10, 60, -20, 0}));
+      set(farArm, swing(farArm, {45, 45, 90, 0, 0}));
+      set(farLeg, pushing ? HoldLimb(r, farLeg, true) : swing(farLeg, {40, -10, 60, -20, 0}));
       break;
     }
     case RollStage::kLie:
@@ -844,8 +856,8 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       move.name = "lie";
       move.duration = 0.6;
       move.to = RolledTrunk(r, 0.0f, 0.0f);
-      set(farArm, RollLimb(r, farArm, {20, 20, 60, 0, 0}));
-      set(nearArm, RollLimb(r, nearArm, {165, 60, 10, 0, 0}));
+      set(farArm, swing(farArm, {20, 20, 60, 0, 0}));
+      set(nearArm, swing(nearArm, {165, 60, 10, 0, 0}));
       set(nearLeg, RollLimb(r, nearLeg, {0, 0, 5, -50, 0}));
       set(farLeg, RollLimb(r, farLeg, {0, 0, 5, -50, 0}));
       break;
@@ -1312,8 +1324,8 @@ glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb, const gl
   const int end = rig_.end[static_cast<int>(limb)];
   const glm::quat rotation = r.jointRotations[end];
   if (IsArm(limb) || glm::dot(rotation * kUp, ground_.normal) < std::cos(glm::radians(10.0f))) return ContactPoint(r, limb);
-  // A flat foot is to press right below the CoM, along its length: where the
-  // force must act for the body to balance. (Where it presses now would be
+  // A flat foot is to press along its length at the wanted pressure point:
+  // where the force must act for the body to balance. (Where it presses now would be
   // wrong: tipping back, the pressure moves to the heel, and feeding that
   // forward would take away the ankle torque that stops the tipping.)
   const BoneBox& box = def_.skeleton.joints[end].box;

@@ -198,14 +198,16 @@ class RiseController {
   // transpose): the torque each joint needs to hold its distal part and pass
   // on the ground forces of the supports below it, with the body's weight
   // shared among the planted supports so their centre of pressure is under
-  // the CoM. Internal torques only: nothing pushes the body from outside.
+  // the CoM (on the feet alone, where it accelerates the CoM toward the
+  // balance point). Internal torques only: nothing pushes the body from outside.
   void FeedForward(const BodyReading& reading, const glm::vec3& comGoal, std::vector<glm::vec3>& out) const;
   // Height of the lowest corner of a hand or foot above the ground, m.
   float Clearance(const BodyReading& reading, Limb limb) const;
   // Where a hand or foot touches the ground: the heel of a hand, the toe edge
   // of a foot on its toes, the middle of a flat sole.
   glm::vec3 ContactPoint(const BodyReading& reading, Limb limb) const;
-  // Where a planted hand or foot is to press on the ground, for FeedForward.
+  // Where a planted hand or foot is to press on the ground for the body's
+  // centre of pressure to be at `pressure`, for FeedForward.
   glm::vec3 SupportPoint(const BodyReading& reading, Limb limb, const glm::vec3& pressure) const;
 
   const BipedDef& def_;

@@ -40,7 +40,17 @@ struct RollOutcome {
   double penetration = 0.0;  // m, deepest box vertex below the ground
   double limbSpeed = 0.0;    // m/s, fastest hand or foot joint (or its end) between two steps
   double plantedSlip = 0.0;  // m, farthest a foot slid along the ground while planted and touching it
+  double contactSlip = 0.0;  // m, farthest any hand or foot slid during one contact (rise::MeasureClip's slip bar)
 };
+
+// The roll's cells: one start per posture that rolls, each on another body.
+struct RollStart {
+  rise::Posture posture;
+  double heightM, massKg;
+};
+constexpr RollStart kRollStarts[] = {{rise::Posture::kSupine, 1.75, 70.0},
+                                     {rise::Posture::kSideLeft, 1.5, 45.0},
+                                     {rise::Posture::kSideRight, 1.95, 95.0}};
 
 RollOutcome Roll(rise::Posture posture, double heightM, double massKg) {
   rise::RiseSpec spec;
@@ -68,7 +78,9 @@ RollOutcome Roll(rise::Posture posture, double heightM, double massKg) {
   for (auto& track : roll.rotations) track.resize(frames);
   for (auto& track : roll.translations) track.resize(std::min(track.size(), frames));
   roll.metadata = {};
-  outcome.penetration = rise::MeasureClip(roll).maxPenetration;
+  const rise::QualityReport quality = rise::MeasureClip(roll);
+  outcome.penetration = quality.maxPenetration;
+  outcome.contactSlip = quality.maxSlip;
 
   const rise::Skeleton& sk = roll.skeleton;
   const char* names[] = {"hand_l", "hand_r", "foot_l", "foot_r"};
@@ -226,14 +238,8 @@ TEST_CASE("roll: from the back or a side the body rolls onto its front and the p
   // start (settling included), nothing sunk into the ground, no hand or foot
   // whipped round (stress runs once found them at 10-16 m/s mid-roll), and a
   // foot planted to push the body over not skating on the ground.
-  const struct {
-    rise::Posture posture;
-    double heightM, massKg;
-  } starts[] = {{rise::Posture::kSupine, 1.75, 70.0},
-                {rise::Posture::kSideLeft, 1.5, 45.0},
-                {rise::Posture::kSideRight, 1.95, 95.0}};
-  for (const auto& start : starts) {
-    INFO(rise::PostureName(start.posture) << ", " << start.heightM << " m, " << start.massKg << " kg");
+  for (const RollStart& start : kRollStarts) {
+    INFO(std::string(rise::PostureName(start.posture)) << ", " << start.heightM << " m, " << start.massKg << " kg");
     const RollOutcome roll = Roll(start.posture, start.heightM, start.massKg);
     CHECK(roll.placeTime > 0.0);
     CHECK(roll.placeTime < 4.5);
@@ -241,6 +247,19 @@ TEST_CASE("roll: from the back or a side the body rolls onto its front and the p
     CHECK(roll.penetration <= 0.02);
     CHECK(roll.limbSpeed <= 6.0);
     CHECK(roll.plantedSlip <= 0.05);
+  }
+}
+
+// Known to fail: the lifted swings keep most hands and feet off the ground
+// while they move, but the bottom leg, which the body rolls over, the arm
+// overhead and the top hand once it has come down still slide 10-30 cm while
+// the body turns on over them. Drop may_fail once they do not.
+TEST_CASE("roll: a hand or foot on the ground does not drag along it while the body turns over" * doctest::may_fail()) {
+  // The clip's contact-slip bar, on the roll alone: contacts up to the first
+  // step of place (the prone path from there on is not the roll's).
+  for (const RollStart& start : kRollStarts) {
+    INFO(std::string(rise::PostureName(start.posture)) << ", " << start.heightM << " m, " << start.massKg << " kg");
+    CHECK(Roll(start.posture, start.heightM, start.massKg).contactSlip < 0.05);
   }
 }
 
