@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace rise {
 namespace {
@@ -37,26 +38,31 @@ constexpr int kMaxCrawlSteps = 24;
 constexpr float kLiftMargin = 0.03f;  // m
 constexpr float kShiftMargin = 0.06f;  // m
 constexpr int kMaxShiftTries = 2;
-constexpr float kHandLineMargin = 0.15f;  // m the CoM stays behind the hands on hands and feet
+// While a foot steps, the CoM stays this far behind the hands' line: over it
+// the body pivots on its hands.
+constexpr float kFootLiftHandLineMargin = 0.22f;  // m
 constexpr float kReachTolerance = 0.01f;  // m a planned limb may miss its place by
 constexpr float kLandedClearance = 0.02f;  // m above the ground a placed hand or foot counts as down
 constexpr float kLandingReach = 0.1f;      // m below the ground a limb being put down aims
 // Phase 2 starts once the CoM's ground projection is this far inside the feet.
 constexpr float kRiseMargin = 0.02f;  // m
-// Crawl geometry: how far a hand moves per step, and how far ahead of the feet
-// the hands rest in a squat with the CoM over the feet.
-constexpr float kHandStep = 0.25f;        // m
-constexpr float kSquatHandsAhead = 0.35f; // m, from the toes
-constexpr float kSitBackBehindToes = 0.06f; // m the sit-back puts the CoM behind the toe edges
-constexpr float kSquatComRatio = 0.6f;     // CoM height in that squat, of the standing CoM height
+// The sit back puts the CoM this far behind the middle of the flat soles:
+// far enough in that the rise starts with room to brake a drift either way.
+constexpr float kSitBackBehindSoles = 0.1f;  // m
+constexpr float kSquatComRatio = 0.45f;    // CoM height in the squat the crawl ends in, of the standing CoM height
+// The sit back hands over to the rise once the CoM is within this of the soles.
+constexpr float kSitBackReach = 0.05f;  // m
+constexpr float kFlatSole = glm::radians(12.0f);  // a sole tilted less than this is flat
 // Supporting arms are kept straight, so the weight goes down the bones and
 // into the elbow's limit instead of through the weak elbow servo.
 constexpr float kSupportArmReach = 1.0f;  // shoulder-to-wrist, of the arm's reach
 // Planted hands' wrists go soft so the palm lies flat and takes load at its heel.
 constexpr float kPlantedWristGain = 0.15f;
-// Feet at least this far either side of the midline in the crawl, so the
-// triangle of both feet and one hand contains the CoM with a small lean.
-constexpr float kCrawlHalfStance = 0.26f;  // m
+// Feet this far either side of the hands' midline in the crawl: narrow, so
+// the knees come in between the arms as the feet walk up to the hands and the
+// squat the rise starts from is balanced side to side (0.10-0.15 m measured:
+// 11, 14 and 5 of 36 prone starts stood).
+constexpr float kCrawlHalfStance = 0.12f;  // m
 constexpr int kMaxRetries = 4;
 constexpr float kMaxLimbSpeed = 1.5f;  // m/s, average along a swing
 // Phase 2's balance feedback: how far the pose's CoM goal moves against the
@@ -65,7 +71,9 @@ constexpr float kCaptureGain = 1.0f;
 // PlanTrunk's priorities, as weights of its least-squares residuals (per m, rad).
 constexpr float kReachWeight = 30.0f;
 constexpr float kStraightArmWeight = 3.0f;
-constexpr float kComWeight = 1.0f;
+// The CoM outweighs straight arms: at 1 the bear stance's shifts moved the
+// planned CoM 3 mm of a 10 cm goal (the arms held the shoulders).
+constexpr float kComWeight = 10.0f;
 constexpr float kComHeightShare = 0.2f;  // of kComWeight, for the CoM's height
 constexpr float kPitchWeight = 0.02f;
 constexpr float kMaxHeelLift = 1.2f;  // rad a foot on its toes may lift its heel
@@ -83,13 +91,18 @@ constexpr float kMaxCrawlOffset = 0.06f;  // m
 constexpr float kVirtualStiffness = 12.0f;  // 1/s^2
 constexpr float kVirtualDamping = 7.0f;     // 1/s
 constexpr float kMaxVirtualForce = 0.25f;
+// Phase 2's ankle strategy: the CoM's wanted acceleration toward the balance
+// point, per m of offset and per m/s (omega 3 rad/s, critically damped).
+constexpr float kBalanceStiffness = 9.0f;  // 1/s^2
+constexpr float kBalanceDamping = 6.0f;    // 1/s
 constexpr float kMaxBalanceSlide = 0.1f;  // m the pelvis may slide from its planned place
 constexpr float kMaxBalanceLean = 1.2f;   // rad the trunk may lean forward of its plan
 constexpr float kLeanRate = 0.8f;         // rad/s the balance lean may change
 // The feet walk in while the hands are farther than this ahead of them (from
 // nearer, a foot can hardly come further under a body bent at the hips); a
 // foot step is at most kFootStep long.
-constexpr float kFootWalkDistance = 0.85f;  // m
+constexpr float kFootWalkDistance = 0.5f;  // m
+constexpr float kPikeComRatio = 0.62f;     // CoM height of the pike as the feet come in, of standing
 constexpr float kFootStep = 0.3f;          // m
 constexpr float kFootLead = 0.1f;          // m
 constexpr float kMinFootStep = 0.06f;      // m: a reachable step shorter than this ends the walk-in
@@ -422,7 +435,7 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
     const glm::vec3 footUp = move.limbs[i].toRotation * kUp;
     heel += std::acos(std::clamp(glm::dot(footUp, ground_.normal), -1.0f, 1.0f)) / static_cast<float>(heels.size());
   }
-  Unknowns x{move.from.pelvis.x, move.from.pelvis.y, move.from.pelvis.z, startPitch, heel, startCurl};
+  auto descend = [&](Unknowns x) {
   Residuals r = residuals(x);
   float lambda = 1e-3f;
   for (int iteration = 0; iteration < 25; ++iteration) {
@@ -458,7 +471,18 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
     }
     if (!improved) break;
   }
-  apply(x, move);
+  return std::make_pair(x, cost(r));
+  };
+  // Gauss-Newton only finds the pose nearest the start; the pike that brings
+  // the feet in under a body on its hands lies over a ridge of the knee and
+  // reach terms from a flat trunk, so a piked start is tried as well.
+  auto best = descend({move.from.pelvis.x, move.from.pelvis.y, move.from.pelvis.z, startPitch, heel, startCurl});
+  if (OnHandsAndFeet(move.phase)) {
+    const glm::vec3 hips = Horizontal(comGoal) - heading_ * 0.2f + ground_.normal * (0.85f * legReach_);
+    const auto piked = descend({hips.x, hips.y, hips.z, -0.3f, heel, 0.6f});
+    if (piked.second < best.second) best = piked;
+  }
+  apply(best.first, move);
 }
 
 // ---------------------------------------------------------------------------
@@ -874,8 +898,7 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
     const float side = IsLeft(foot) ? 1.0f : -1.0f;
     const glm::vec3 hip = LimbRoot(def_.skeleton, rig_, trunk, foot);
     const float hipHalf = std::fabs(glm::dot(hip - move.from.pelvis, left));
-    const float halfStance = std::max(0.5f * static_cast<float>(spec_.style.stanceWidthM), kCrawlHalfStance);
-    const glm::vec3 toe = Project(ground_, hip - heading_ * (0.9f * legReach_) + left * side * (halfStance - hipHalf));
+    const glm::vec3 toe = Project(ground_, hip - heading_ * (0.9f * legReach_) + left * side * (kCrawlHalfStance - hipHalf));
     LimbMove& m = move.limbs[i];
     m = HoldLimb(r, foot, false);
     m.toRotation = FootRotation(heading_, glm::radians(80.0f));
@@ -908,6 +931,7 @@ RiseController::Move RiseController::PlanPush(const BodyReading& r) {
   PlanTrunk(move, comGoal, {true, true});
   crawlSteps_ = 0;
   shiftTries_ = 0;
+  stepSpot_ = {};
   feetIn_ = false;
   crawlOffset_ = glm::vec3(0.0f);
   return move;
@@ -934,26 +958,25 @@ float RiseController::HandsAhead(const BodyReading& r, Limb hand) const {
 }
 
 std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
-  // Phase 1 brings hands and feet together until the CoM can sit over the
-  // toes with the hands still down (bench/reach_probe: with the hands within
-  // about 0.4 m of the toes): the feet walk in while they are far (each hand
-  // step would gain little there), then the hands walk back toward the feet
-  // as the paper's Phase 1 does. Candidates in order of preference; the
-  // crawl takes the first whose lift it can balance.
+  // Phase 1 brings the feet in to the hands until the CoM can sit back over
+  // them with the hands still down (bench/reach_probe: the hands within about
+  // 0.4-0.5 m of the toes): the rear foot steps, then the other, and once in,
+  // the rear one comes up beside the other. The hands stay where the push put
+  // them: walking them back as well, as the paper's Phase 1 does, stood 3 of
+  // 36 prone starts (bench/prone_variants) against 14 with the feet alone.
   // A step that ended short leaves its limb in the air: it goes down first.
   for (int i = 0; i < kLimbCount; ++i) {
     if (Clearance(r, static_cast<Limb>(i)) > kLandedClearance) return {static_cast<Limb>(i)};
   }
-  const float left = HandsAhead(r, Limb::kHandLeft), right = HandsAhead(r, Limb::kHandRight);
-  std::vector<Limb> hands;
-  if (left > kSquatHandsAhead + 0.5f * kHandStep) hands.push_back(Limb::kHandLeft);
-  if (right > kSquatHandsAhead + 0.5f * kHandStep) hands.push_back(Limb::kHandRight);
-  if (hands.size() == 2 && right > left) std::swap(hands[0], hands[1]);
-  if (0.5f * (left + right) <= kFootWalkDistance || feetIn_) return hands;
-  const bool leftBehind = glm::dot(ContactPoint(r, Limb::kFootLeft) - ContactPoint(r, Limb::kFootRight), heading_) < 0.0f;
-  std::vector<Limb> order = {leftBehind ? Limb::kFootLeft : Limb::kFootRight, leftBehind ? Limb::kFootRight : Limb::kFootLeft};
-  order.insert(order.end(), hands.begin(), hands.end());
-  return order;
+  // By the ankles, as the step length measures them (toe edges can sit askew).
+  const float stagger = glm::dot(r.jointPositions[rig_.end[2]] - r.jointPositions[rig_.end[3]], heading_);
+  const Limb rear = stagger < 0.0f ? Limb::kFootLeft : Limb::kFootRight;
+  const float handsAhead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
+  if (handsAhead <= kFootWalkDistance + kMinFootStep || feetIn_) {
+    if (std::fabs(stagger) > kMinFootStep) return {rear};
+    return {};
+  }
+  return {rear};
 }
 
 SupportPolygon RiseController::StanceWithout(const BodyReading& r, Limb lifted) const {
@@ -966,26 +989,50 @@ SupportPolygon RiseController::StanceWithout(const BodyReading& r, Limb lifted) 
 
 float RiseController::CrawlComHeight(const BodyReading& r) const {
   // Hips high while the feet are far (a pike), lower into a squat as the CoM nears them.
-  const float farFromFeet = std::clamp(FeetRegion(r).SignedDistance(Ground(r.com)) / 0.5f, 0.0f, 1.0f);
-  return glm::mix(kSquatComRatio * standComHeight_, crawlComHeight_, farFromFeet);
+  // The hips rise into a pike as the feet walk in under them.
+  const float handsAhead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
+  const float in = std::clamp((1.1f - handsAhead) / (1.1f - kFootWalkDistance), 0.0f, 1.0f);
+  return glm::mix(crawlComHeight_, kPikeComRatio * standComHeight_, in);
+}
+
+glm::vec3 RiseController::FootLiftCom(const BodyReading& r, Limb foot) const {
+  // Where the CoM is inside both feet's lift triangles at once (hands and one
+  // foot each): the triangle of the hands and the crossing of the diagonals
+  // from each hand to the opposite foot. Held at its incentre, deepest inside,
+  // either foot can lift in turn without the CoM crossing the body between
+  // steps; and the spot comes from contacts that stay put, not from where the
+  // measured CoM has crept to.
+  const glm::vec2 hl = Ground(ContactPoint(r, Limb::kHandLeft)), hr = Ground(ContactPoint(r, Limb::kHandRight));
+  const glm::vec2 fl = Ground(ContactPoint(r, Limb::kFootLeft)), fr = Ground(ContactPoint(r, Limb::kFootRight));
+  const glm::vec2 d1 = fr - hl, d2 = fl - hr;
+  const float cross = d1.x * d2.y - d1.y * d2.x;
+  glm::vec2 deep = StanceWithout(r, foot).Centroid();
+  if (std::fabs(cross) > 1e-4f) {
+    const glm::vec2 w = hr - hl;
+    const float t = (w.x * d2.y - w.y * d2.x) / cross;
+    if (t > 0.0f && t < 1.0f) {
+      const glm::vec2 x = hl + t * d1;
+      const float a = glm::length(hr - x), b = glm::length(x - hl), c = glm::length(hl - hr);
+      deep = (a * hl + b * hr + c * x) / (a + b + c);
+    }
+  }
+  // Never near the hands' line: over it the body pivots on its hands.
+  const glm::vec2 forward = glm::normalize(Ground(heading_));
+  const float handLine = std::min(glm::dot(hl, forward), glm::dot(hr, forward));
+  deep -= forward * std::max(0.0f, glm::dot(deep, forward) - (handLine - kFootLiftHandLineMargin));
+  return Project(ground_, glm::vec3(deep.x, 0.0f, deep.y)) + ground_.normal * CrawlComHeight(r);
 }
 
 std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading& r, Limb lifted) const {
   const SupportPolygon stance = StanceWithout(r, lifted);
   const glm::vec2 forward = glm::normalize(Ground(heading_));
-  // The nearest point kShiftMargin inside the support of the limbs that stay,
-  // from a point a little behind the CoM for a hand step (toward the feet,
-  // the paper's secondary goal), never near the hands' line for a foot step
-  // (over it the body pivots on its hands).
+  // For a hand: the nearest point kShiftMargin inside the support of the limbs
+  // that stay, from a point a little behind the CoM (toward the feet, the
+  // paper's secondary goal).
   auto inside = [&](glm::vec2 from) {
     glm::vec2 goal = stance.Closest(from);
     const glm::vec2 centre = stance.Centroid();
     for (int k = 0; k < 30 && stance.SignedDistance(goal) > -kShiftMargin; ++k) goal += 0.1f * (centre - goal);
-    if (!IsArm(lifted)) {
-      const float handLine = std::min(glm::dot(Ground(ContactPoint(r, Limb::kHandLeft)), forward),
-                                      glm::dot(Ground(ContactPoint(r, Limb::kHandRight)), forward));
-      goal -= forward * std::max(0.0f, glm::dot(goal, forward) - (handLine - kHandLineMargin));
-    }
     return Project(ground_, glm::vec3(goal.x, 0.0f, goal.y)) + ground_.normal * CrawlComHeight(r);
   };
   std::vector<glm::vec3> goals;
@@ -1010,7 +1057,7 @@ std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading&
     goals.push_back(plan.target);
     goals.push_back(inside(Ground(r.com) - forward * 0.05f));
   } else {
-    goals.push_back(inside(Ground(r.com)));
+    goals.push_back(FootLiftCom(r, lifted));
   }
   for (const glm::vec3& comGoal : goals) {
     Move move = OnAllFours(r, "shift", 0.8);
@@ -1024,16 +1071,41 @@ std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading&
   return std::nullopt;
 }
 
+bool RiseController::SolesDown(const BodyReading& r) const {
+  for (int i = 2; i < 4; ++i) {
+    if (glm::dot(r.jointRotations[rig_.end[i]] * kUp, ground_.normal) <= std::cos(kFlatSole)) return false;
+  }
+  return true;
+}
+
 RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
-  if (FeetRegion(r).SignedDistance(Ground(r.com)) < -kRiseMargin || crawlSteps_ >= kMaxCrawlSteps) return PlanRise(r);
+  const float comToFeet = FeetRegion(r).SignedDistance(Ground(r.com));
+  // The sit back hands over to the rise a little short of the soles: the
+  // rise's own balance takes the CoM the rest of the way.
+  if (comToFeet < -kRiseMargin || crawlSteps_ >= kMaxCrawlSteps || (move_.name == "sit back" && comToFeet < kSitBackReach)) {
+    return PlanRise(r);
+  }
   const std::vector<Limb> candidates = StepCandidates(r);
   if (candidates.empty()) {
-    // Hands and feet are together: the CoM goes back over the toes, hips low,
-    // the hands still touching; the rise lets go of them once it is there.
-    Move move = OnAllFours(r, "sit back", 1.2);
     const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
-    const glm::vec3 comGoal = Project(ground_, toes - heading_ * kSitBackBehindToes) + ground_.normal * (0.45f * standComHeight_);
-    PlanTrunk(move, comGoal, {true, true}, true);
+    if (!SolesDown(r)) {
+      // Hands and feet are together. The heels come down first, the CoM held
+      // over the toe edges with the hands still bearing: on its toes a body
+      // whose CoM goes back past the toe edges can only fall back (nothing
+      // behind them can push it forward again), while a flat sole reaches
+      // back to the heel.
+      Move move = OnAllFours(r, "heels down", 1.2);
+      for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
+      PlanTrunk(move, Project(ground_, toes) + ground_.normal * (kSquatComRatio * standComHeight_), {true, true});
+      ++crawlSteps_;
+      return move;
+    }
+    // Then the CoM goes back over the flat soles, hips low, the hands still
+    // touching; the rise lets go of them once it is there.
+    Move move = OnAllFours(r, "sit back", 1.2);
+    for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
+    PlanTrunk(move, Project(ground_, toes - heading_ * kSitBackBehindSoles) + ground_.normal * (kSquatComRatio * standComHeight_),
+              {true, true});
     ++crawlSteps_;
     return move;
   }
@@ -1082,14 +1154,16 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   // A limb left in the air by a short step only goes down where it is.
   const bool putDown = Clearance(r, limb) > kLandedClearance;
   static constexpr std::array<float, 5> kFractions{1.0f, 0.75f, 0.5f, 0.3f, 0.15f};
+  float nominalFootStep = 0.0f;
   for (const float candidate : kFractions) {
     const float fraction = putDown ? 0.0f : candidate;
     Move move = OnAllFours(r, IsArm(limb) ? "hand step" : "foot step", 0.7);
     LimbMove& m = move.limbs[i] = HoldLimb(r, limb, false);
     if (IsArm(limb)) {
-      const float ahead = HandsAhead(r, limb) - fraction * std::min(kHandStep, HandsAhead(r, limb) - kSquatHandsAhead);
+      // (Hands only step to come down: StepCandidates.) Where it is along the
+      // heading, back beside the shoulder's line across it.
       const float side = IsLeft(limb) ? 1.0f : -1.0f;
-      const glm::vec3 spot = Project(ground_, FeetCentre(r) + heading_ * ahead + left * side * shoulderHalfWidth_ * 0.75f);
+      const glm::vec3 spot = Project(ground_, FeetCentre(r) + heading_ * HandsAhead(r, limb) + left * side * shoulderHalfWidth_ * 0.75f);
       m.toRotation = PlantedHandRotation(limb);
       m.to = WristAbove(limb, spot, m.toRotation);
       m.lift = HandSwingLift(limb);
@@ -1097,7 +1171,9 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       // Straight down, turned as it is, aiming below the ground: the ground
       // stops it, and the move ends once it touches.
       m.toRotation = m.fromRotation;
-      m.to = m.from - ground_.normal * (Clearance(r, limb) + kLandingReach);
+      glm::vec3 across = stepSpot_[i] ? *stepSpot_[i] - m.from : glm::vec3(0.0f);
+      across -= ground_.normal * glm::dot(across, ground_.normal);
+      m.to = m.from + across - ground_.normal * (Clearance(r, limb) + kLandingReach);
       m.lift = 0.0f;
       move.landing = i;
     } else {
@@ -1105,23 +1181,37 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       // Feet come in side by side: a step ends at most kFootLead ahead of the other foot.
       const Limb other = limb == Limb::kFootLeft ? Limb::kFootRight : Limb::kFootLeft;
       const float behindOther = glm::dot(r.jointPositions[rig_.end[static_cast<int>(other)]] - r.jointPositions[rig_.end[i]], heading_);
-      const float length = fraction * std::clamp(std::min(handsAhead - kFootWalkDistance + 0.05f, behindOther + kFootLead), 0.05f, kFootStep);
+      nominalFootStep = std::clamp(std::min(handsAhead - kFootWalkDistance, behindOther + kFootLead), 0.05f, kFootStep);
+      // In: the rear foot only comes up beside the other.
+      if (handsAhead <= kFootWalkDistance + kMinFootStep) nominalFootStep = std::clamp(behindOther, 0.0f, kFootStep);
+      const float length = fraction * nominalFootStep;
       // From the ankle, not the toe: with no hip twist the foot's yaw follows the
       // leg, so its toe can sit to one side, and stepping from there walked
       // the feet apart.
       m.toRotation = FootRotation(heading_, glm::radians(60.0f));
       const glm::vec3 toe = Project(ground_, r.jointPositions[rig_.end[i]] + m.toRotation * toeLocal_);
-      m.to = AnkleForToe(toe + heading_ * length, m.toRotation);
+      // Back to the stance width either side of the hands' midline: feet that
+      // keep their own line splay apart step by step.
+      const glm::vec3 hands = 0.5f * (ContactPoint(r, Limb::kHandLeft) + ContactPoint(r, Limb::kHandRight));
+      const float side = IsLeft(limb) ? 1.0f : -1.0f;
+      const glm::vec3 across = left * (side * kCrawlHalfStance - glm::dot(toe - hands, left));
+      m.to = AnkleForToe(toe + heading_ * length + across, m.toRotation);
       m.lift = static_cast<float>(spec_.style.stepHeightM);
     }
-    PlanTrunk(move, r.com, {limb != Limb::kHandLeft, limb != Limb::kHandRight});
+    // A limb being put down aims below the ground, but the trunk is planned
+    // for it touching down there: reaching for the aim pulled the body over.
+    const float aimBelow = putDown ? kLandingReach : 0.0f;
+    m.to += ground_.normal * aimBelow;
+    PlanTrunk(move, IsArm(limb) ? r.com : FootLiftCom(r, limb), {limb != Limb::kHandLeft, limb != Limb::kHandRight});
+    move.limbs[i].to -= ground_.normal * aimBelow;
     best = move;
     if (putDown || Reachable(move)) break;
   }
+  if (!putDown) stepSpot_[i] = best.limbs[i].to;
   // The feet are as far in as this body bent at the hips lets them come: the
   // hands walk from here.
   if (!IsArm(limb) && !putDown) {
-    feetIn_ = glm::dot(best.limbs[i].to - best.limbs[i].from, heading_) < kMinFootStep;
+    feetIn_ = nominalFootStep >= 2.0f * kMinFootStep && glm::dot(best.limbs[i].to - best.limbs[i].from, heading_) < kMinFootStep;
   }
   return best;
 }
@@ -1230,18 +1320,18 @@ glm::vec3 RiseController::ContactPoint(const BodyReading& r, Limb limb) const {
   return Project(ground_, r.jointPositions[end] + rotation * box.center);
 }
 
-glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb) const {
+glm::vec3 RiseController::SupportPoint(const BodyReading& r, Limb limb, const glm::vec3& pressure) const {
   const int end = rig_.end[static_cast<int>(limb)];
   const glm::quat rotation = r.jointRotations[end];
   if (IsArm(limb) || glm::dot(rotation * kUp, ground_.normal) < std::cos(glm::radians(10.0f))) return ContactPoint(r, limb);
-  // A flat foot is to press right below the CoM, along its length: where the
-  // force must act for the body to balance. (Where it presses now would be
+  // A flat foot is to press along its length at the wanted pressure point:
+  // where the force must act for the body to balance. (Where it presses now would be
   // wrong: tipping back, the pressure moves to the heel, and feeding that
   // forward would take away the ankle torque that stops the tipping.)
   const BoneBox& box = def_.skeleton.joints[end].box;
   const glm::vec3 centre = r.jointPositions[end] + rotation * box.center;
   const glm::vec3 along = rotation * glm::vec3(0.0f, 0.0f, 1.0f);
-  const float offset = std::clamp(glm::dot(r.com - centre, along), -box.halfExtents.z, box.halfExtents.z);
+  const float offset = std::clamp(glm::dot(pressure - centre, along), -box.halfExtents.z, box.halfExtents.z);
   return Project(ground_, centre + along * offset);
 }
 
@@ -1252,18 +1342,38 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
   // lying, the trunk rests on the ground and needs no help.
   if (phase_ == RisePhase::kSettle || phase_ == RisePhase::kRoll || phase_ == RisePhase::kPlace || !hasMove_) return;
 
+  const glm::vec3 gravity(0.0f, -9.81f, 0.0f);
+  // Phase 2 balances on the feet alone: the ground's push is aimed so the CoM
+  // accelerates toward the balance point. For an inverted pendulum that push
+  // presses at the centre of pressure h a / g behind the CoM's ground point
+  // (a the wanted acceleration, h the CoM's height), inside the feet. Pressing
+  // right below the CoM instead only holds the weight: a body drifting off
+  // the balance point at the end of a rise kept drifting until it fell.
+  glm::vec3 pressure = r.com, balanceForce(0.0f);
+  if (phase_ == RisePhase::kRise || phase_ == RisePhase::kStand) {
+    glm::vec3 accel = kBalanceStiffness * (BalancePoint(r) - r.com) - kBalanceDamping * r.comVelocity;
+    accel -= ground_.normal * glm::dot(accel, ground_.normal);
+    const glm::vec2 wanted = Ground(r.com - accel * (Height(ground_, r.com) / 9.81f));
+    const SupportPolygon feet = FeetRegion(r);
+    const glm::vec2 cop = feet.SignedDistance(wanted) < 0.0f ? wanted : feet.Closest(wanted);
+    pressure = Project(ground_, glm::vec3(cop.x, 0.0f, cop.y));
+    // The horizontal push that goes with that pressure point (clipped to the
+    // feet, it may be less than wanted): m g / h times the CoM's offset from it.
+    balanceForce = totalMass_ * 9.81f / std::max(0.2f, Height(ground_, r.com)) * Horizontal(r.com - pressure);
+    balanceForce -= ground_.normal * glm::dot(balanceForce, ground_.normal);
+  }
   // Share the weight among planted, touching supports: the least-norm weights
-  // whose weighted centre is the CoM's ground projection, negatives dropped.
+  // whose weighted centre is the pressure point, negatives dropped.
   std::array<glm::vec3, kLimbCount> point{};
   std::array<float, kLimbCount> share{};
   std::vector<int> supports;
   for (int i = 0; i < kLimbCount; ++i) {
     if (!planted_[i] || !r.touching[i]) continue;
-    point[i] = SupportPoint(r, static_cast<Limb>(i));
+    point[i] = SupportPoint(r, static_cast<Limb>(i), pressure);
     supports.push_back(i);
   }
   if (supports.empty()) return;
-  const glm::vec2 c = Ground(r.com);
+  const glm::vec2 c = Ground(pressure);
   for (int pass = 0; pass < 3; ++pass) {
     // Solve A A^T y = b, w = A^T y with A = [1; x; z] over the supports.
     glm::mat3 normal(0.0f);
@@ -1288,12 +1398,11 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
   float total = 0.0f;
   for (int i : supports) total += share[i];
   if (total <= 0.0f) return;
-  const glm::vec3 gravity(0.0f, -9.81f, 0.0f);
   std::array<glm::vec3, kLimbCount> force{};
   // On hands and feet, a virtual force on the CoM (Coros et al. 2010) pulls it
   // toward the plan's CoM: a spring-damper shared among the supports like the
   // weight, its ground forces turned into joint torques with the rest.
-  glm::vec3 virtualForce(0.0f);
+  glm::vec3 virtualForce = balanceForce;
   if (OnHandsAndFeet(phase_)) {
     virtualForce = totalMass_ * (kVirtualStiffness * (comGoal - r.com) - kVirtualDamping * r.comVelocity);
     virtualForce -= ground_.normal * glm::dot(virtualForce, ground_.normal);
@@ -1378,6 +1487,9 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
       const float limit = 0.05f;
       if (glm::length(balanceOffset_) > limit) balanceOffset_ *= limit / glm::length(balanceOffset_);
     }
+    // Sitting back ends as soon as the CoM is over the feet: carried on, it
+    // would keep going back past the heels.
+    if (move_.name == "sit back" && FeetRegion(reading).SignedDistance(Ground(reading.com)) < -kRiseMargin) progress_ = 1.0f;
     if (move_.landing >= 0 && reading.touching[move_.landing] &&
         Clearance(reading, static_cast<Limb>(move_.landing)) < kLandedClearance) {
       progress_ = 1.0f;

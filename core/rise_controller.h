@@ -128,6 +128,8 @@ class RiseController {
   Move PlanPlace(const BodyReading& reading);
   Move PlanPush(const BodyReading& reading);
   Move PlanCrawl(const BodyReading& reading);
+  // Both soles flat on the ground.
+  bool SolesDown(const BodyReading& reading) const;
   // A move that puts the CoM inside the support of all limbs but `lifted`, if
   // a reachable pose does.
   std::optional<Move> PlanShift(const BodyReading& reading, Limb lifted) const;
@@ -138,6 +140,8 @@ class RiseController {
   // Ground hull of the contact points of every limb but one.
   SupportPolygon StanceWithout(const BodyReading& reading, Limb lifted) const;
   float CrawlComHeight(const BodyReading& reading) const;
+  // Where the CoM is held while a foot steps.
+  glm::vec3 FootLiftCom(const BodyReading& reading, Limb foot) const;
   // Whether the move's end pose puts every held or moving hand and foot on its place.
   bool Reachable(const Move& move) const;
   // Whether a pose goal puts every held or moving hand and foot of the move on its place.
@@ -194,15 +198,17 @@ class RiseController {
   // transpose): the torque each joint needs to hold its distal part and pass
   // on the ground forces of the supports below it, with the body's weight
   // shared among the planted supports so their centre of pressure is under
-  // the CoM. Internal torques only: nothing pushes the body from outside.
+  // the CoM (on the feet alone, where it accelerates the CoM toward the
+  // balance point). Internal torques only: nothing pushes the body from outside.
   void FeedForward(const BodyReading& reading, const glm::vec3& comGoal, std::vector<glm::vec3>& out) const;
   // Height of the lowest corner of a hand or foot above the ground, m.
   float Clearance(const BodyReading& reading, Limb limb) const;
   // Where a hand or foot touches the ground: the heel of a hand, the toe edge
   // of a foot on its toes, the middle of a flat sole.
   glm::vec3 ContactPoint(const BodyReading& reading, Limb limb) const;
-  // Where a planted hand or foot is to press on the ground, for FeedForward.
-  glm::vec3 SupportPoint(const BodyReading& reading, Limb limb) const;
+  // Where a planted hand or foot is to press on the ground for the body's
+  // centre of pressure to be at `pressure`, for FeedForward.
+  glm::vec3 SupportPoint(const BodyReading& reading, Limb limb, const glm::vec3& pressure) const;
 
   const BipedDef& def_;
   RiseSpec spec_;
@@ -229,6 +235,9 @@ class RiseController {
   int crawlSteps_ = 0;
   int shiftTries_ = 0;
   bool feetIn_ = false;  // the feet have come in as far as they can
+  // Where each limb's last step was to land: a swing the servos leave short
+  // is finished by putting the limb down there, not where it hangs.
+  std::array<std::optional<glm::vec3>, kLimbCount> stepSpot_{};
   float rollSign_ = 0.0f;                   // +1 rolling onto the left side, -1 onto the right; 0 before the roll
   RollStage rollStage_ = RollStage::kNone;  // the roll's last move
   glm::vec3 heading_{0.0f, 0.0f, 1.0f};
