@@ -63,9 +63,9 @@ rise_cli_test(generate_quiet EXIT 1 REGEX "stdout: \nstderr: \n" ARGS ${RISE_SAM
 # Exit 0 needs a clip that stands: the main promise, so it runs the full sample.
 rise_cli_test(generate_stands EXIT 0 REGEX "stood at [0-9.]+ s.*quality PASS"
   ARGS ${RISE_SAMPLES}/supine.json -o c.glb PRESENT c.glb)
-# The rise controller does not yet bring a body to a still stand (issue 4 is
-# open): this end-to-end bar is kept, visible as "Disabled" in every CTest
-# summary, and switched back on when the controller stands.
+# Supine starts do not yet stand, and prone ones that do still slide a hand
+# (issue 4 is open): this end-to-end bar is kept, visible as "Disabled" in
+# every CTest summary, and switched back on when the sample stands with every bar.
 set_tests_properties(cli.generate_stands PROPERTIES LABELS "cli;controller" DISABLED TRUE)
 
 # --- bad input: exit 2, one message naming file, path, found and allowed; no file written ---
