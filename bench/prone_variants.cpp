@@ -7,9 +7,9 @@
 //   prone_variants [count] [only] [posture]
 //   env: DUR (max_duration_s, 20), SPEED (style.speed, 1), FRIC (terrain.friction, 0.8), TRACE=file (JSON lines of `only`),
 //        OUT=dir (dir/v.glb of `only`)
+#include "bench/variant_run.h"
 #include "core/clip_output.h"
 #include "core/generate.h"
-#include "core/input_json.h"
 
 #include <glm/geometric.hpp>
 
@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <optional>
 #include <string>
 
 int main(int argc, char** argv) {
@@ -33,14 +34,9 @@ int main(int argc, char** argv) {
                   "\"seed\":%d,\"max_duration_s\":%s,\"style\":{\"speed\":%s},\"terrain\":{\"friction\":%s}}",
                   height, mass, posture.c_str(), (k * 37) % 360, k + 1, std::getenv("DUR") ? std::getenv("DUR") : "20",
                   std::getenv("SPEED") ? std::getenv("SPEED") : "1", std::getenv("FRIC") ? std::getenv("FRIC") : "0.8");
-    const auto spec = rise::ParseRiseSpec(text, "variant.json");
-    if (!spec) {
-      std::printf("%2d: %s\n", k, spec.Error().Format().c_str());
-      return 2;
-    }
-    rise::GenerateSettings settings;
-    settings.keepTrace = true;
-    const rise::GeneratedClip clip = rise::GenerateClip(spec.Value(), settings);
+    const std::optional<bench::VariantRun> run = bench::RunVariant(k, text, "variant.json");
+    if (!run) return 2;
+    const rise::GeneratedClip& clip = run->clip;
     if (only >= 0 && std::getenv("TRACE")) {
       if (FILE* file = std::fopen(std::getenv("TRACE"), "w")) {
         const std::string lines = rise::TraceToJsonLines(clip.trace);
@@ -50,7 +46,7 @@ int main(int argc, char** argv) {
     }
     if (only >= 0 && std::getenv("OUT")) {
       const std::string error = rise::WriteClipFiles(clip.clip, {std::string(std::getenv("OUT")) + "/v.glb"},
-                                                     rise::ClipOutputOptionsOf(spec.Value()));
+                                                     rise::ClipOutputOptionsOf(run->spec));
       if (!error.empty()) std::printf("write: %s\n", error.c_str());
     }
     int furthest = 0;

@@ -4,12 +4,13 @@
 // how far the CoM strayed from the feet.
 //
 //   squat_variants [count] [only]
+#include "bench/variant_run.h"
 #include "core/generate.h"
-#include "core/input_json.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 int main(int argc, char** argv) {
@@ -28,14 +29,9 @@ int main(int argc, char** argv) {
                   "\"shin_r\":[%d],\"foot_l\":[%d,0],\"foot_r\":[%d,0],\"upper_arm_l\":[40,0],\"upper_arm_r\":[40,0]}},"
                   "\"seed\":%d,\"max_duration_s\":8}",
                   height, mass, (k * 37) % 360, pitch, hip, hip, knee, knee, ankle, ankle, k + 1);
-    const auto spec = rise::ParseRiseSpec(text, "squat.json");
-    if (!spec) {
-      std::printf("%2d: %s\n", k, spec.Error().Format().c_str());
-      return 2;
-    }
-    rise::GenerateSettings settings;
-    settings.keepTrace = true;
-    const rise::GeneratedClip clip = rise::GenerateClip(spec.Value(), settings);
+    const std::optional<bench::VariantRun> run = bench::RunVariant(k, text, "squat.json");
+    if (!run) return 2;
+    const rise::GeneratedClip& clip = run->clip;
     float worst = -9.0f;
     for (const rise::TraceSample& sample : clip.trace) {
       if (sample.phase >= rise::RisePhase::kRise) worst = std::max(worst, sample.feetDistance);
