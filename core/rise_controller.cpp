@@ -957,6 +957,10 @@ float RiseController::HandsAhead(const BodyReading& r, Limb hand) const {
   return glm::dot(ContactPoint(r, hand) - toes, heading_);
 }
 
+float RiseController::HandsAhead(const BodyReading& r) const {
+  return 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
+}
+
 std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
   // Phase 1 brings the feet in to the hands until the CoM can sit back over
   // them with the hands still down (bench/reach_probe: the hands within about
@@ -971,7 +975,7 @@ std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
   // By the ankles, as the step length measures them (toe edges can sit askew).
   const float stagger = glm::dot(r.jointPositions[rig_.end[2]] - r.jointPositions[rig_.end[3]], heading_);
   const Limb rear = stagger < 0.0f ? Limb::kFootLeft : Limb::kFootRight;
-  const float handsAhead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
+  const float handsAhead = HandsAhead(r);
   if (handsAhead <= kFootWalkDistance + kMinFootStep || feetIn_) {
     if (std::fabs(stagger) > kMinFootStep) return {rear};
     return {};
@@ -990,7 +994,7 @@ SupportPolygon RiseController::StanceWithout(const BodyReading& r, Limb lifted) 
 float RiseController::CrawlComHeight(const BodyReading& r) const {
   // Hips high while the feet are far (a pike), lower into a squat as the CoM nears them.
   // The hips rise into a pike as the feet walk in under them.
-  const float handsAhead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
+  const float handsAhead = HandsAhead(r);
   const float in = std::clamp((1.1f - handsAhead) / (1.1f - kFootWalkDistance), 0.0f, 1.0f);
   return glm::mix(crawlComHeight_, kPikeComRatio * standComHeight_, in);
 }
@@ -1177,7 +1181,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       m.lift = 0.0f;
       move.landing = i;
     } else {
-      const float handsAhead = 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
+      const float handsAhead = HandsAhead(r);
       // Feet come in side by side: a step ends at most kFootLead ahead of the other foot.
       const Limb other = limb == Limb::kFootLeft ? Limb::kFootRight : Limb::kFootLeft;
       const float behindOther = glm::dot(r.jointPositions[rig_.end[static_cast<int>(other)]] - r.jointPositions[rig_.end[i]], heading_);

@@ -137,6 +137,8 @@ class RiseController {
   std::vector<Limb> StepCandidates(const BodyReading& reading) const;
   // How far a hand is ahead of the feet's toe edges along the heading, m.
   float HandsAhead(const BodyReading& reading, Limb hand) const;
+  // The same for the hands' middle.
+  float HandsAhead(const BodyReading& reading) const;
   // Ground hull of the contact points of every limb but one.
   SupportPolygon StanceWithout(const BodyReading& reading, Limb lifted) const;
   float CrawlComHeight(const BodyReading& reading) const;
