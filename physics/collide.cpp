@@ -314,15 +314,18 @@ Manifold CollidePlaneBox(const PlaneShape& plane, const OrientedBox& b, float sp
   // plane counts: its far face's vertices sit over the same area, and the reduction to four
   // points could keep one of them in place of the vertex that touches first.
   int upAxis = 0;
-  float upDot = 0.0f;
-  for (int i = 0; i < 3; ++i) {
-    const float d = glm::dot(plane.normal, b.axes[i]);
-    if (std::fabs(d) > std::fabs(upDot)) {
-      upAxis = i;
-      upDot = d;
+  int farSide = 0;  // bit upAxis of the far face's vertices
+  if (reachDistance > speculativeDistance) {
+    float upDot = 0.0f;
+    for (int i = 0; i < 3; ++i) {
+      const float d = glm::dot(plane.normal, b.axes[i]);
+      if (std::fabs(d) > std::fabs(upDot)) {
+        upAxis = i;
+        upDot = d;
+      }
     }
+    farSide = upDot > 0.0f ? 1 : 0;
   }
-  const int farSide = upDot > 0.0f ? 1 : 0;  // bit upAxis of the far face's vertices
   Candidate candidates[8];
   int count = 0;
   for (int v = 0; v < 8; ++v) {

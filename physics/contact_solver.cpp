@@ -100,9 +100,10 @@ void WarmStartContact(const Contact& contact, Body& a, Body& b) {
   }
 }
 
-// Returns whether a point of a static contact was hard.
+// Returns whether a point of a static contact was hard. Inlined into its loop as it was before
+// it had a second caller (ResolveHardContact): 3 % of the fast drop's instructions per step.
 template <bool kStaticA>
-bool SolveContact(Contact& contact, Body& a, Body& b, const SolverContext& context, bool useBias) {
+[[gnu::always_inline]] inline bool SolveContact(Contact& contact, Body& a, Body& b, const SolverContext& context, bool useBias) {
   const glm::vec3 n = contact.normal;
   // Static geometry has no step deltas: its side of the separation update is zero.
   const float approach =
@@ -163,6 +164,13 @@ bool SolveContact(Contact& contact, Body& a, Body& b, const SolverContext& conte
   return hard;
 }
 
+// The second solve of a hard static contact (SolveContacts), out of line so that the first,
+// which every static contact takes, stays inlined in its loop.
+[[gnu::noinline]] void ResolveHardContact(Contact& contact, Body& staticBody, Body& b, const SolverContext& context,
+                                          bool useBias) {
+  SolveContact<true>(contact, staticBody, b, context, useBias);
+}
+
 }  // namespace
 
 void PrepareContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Body& staticBody,
@@ -207,7 +215,7 @@ bool SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Bo
   if (!anyHard) return false;
   for (Contact& contact : contacts) {
     if (contact.bodyA >= 0) break;
-    if (contact.hard) SolveContact<true>(contact, staticBody, bodies[contact.bodyB], context, useBias);
+    if (contact.hard) ResolveHardContact(contact, staticBody, bodies[contact.bodyB], context, useBias);
   }
   return true;
 }
