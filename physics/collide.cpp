@@ -331,8 +331,7 @@ Manifold CollidePlaneBox(const PlaneShape& plane, const OrientedBox& b, float sp
   for (int v = 0; v < 8; ++v) {
     const glm::vec3& p = vertices[v];
     const float separation = glm::dot(plane.normal, p) - plane.offset;
-    if (separation < speculativeDistance ||
-        (separation < reachDistance && ((v >> upAxis) & 1) != farSide)) {
+    if (separation < speculativeDistance || (separation < reachDistance && ((v >> upAxis) & 1) != farSide)) {
       candidates[count++] = {p - plane.normal * (0.5f * separation), separation, static_cast<uint32_t>(v)};
     }
   }

@@ -111,8 +111,7 @@ float PlaneReach(const PlaneShape& plane, const OrientedBox& box, const Body& bo
   return std::max(closing, 0.0f) * timeStep;
 }
 
-Manifold CollideStatic(const StaticShape& shape, const OrientedBox& box, float speculativeDistance,
-                       float planeReach) {
+Manifold CollideStatic(const StaticShape& shape, const OrientedBox& box, float speculativeDistance, float planeReach) {
   switch (shape.type) {
     case StaticShapeType::kPlane:
       return CollidePlaneBox(shape.plane, box, speculativeDistance, planeReach);
@@ -174,8 +173,7 @@ void Collide(const std::vector<Body>& bodies, const std::vector<StaticShape>& st
       // A vertex closing faster than the speculative distance per step could pass the plane
       // between two Collide stages (12 m/s is 5 cm a step at 240 Hz): the band then reaches as
       // far as that vertex travels. Slower boxes see exactly the fixed distance.
-      const float reach =
-          plane ? PlaneReach(shape.plane, boxes[b], body, settings.gravity, settings.timeStep) : 0.0f;
+      const float reach = plane ? PlaneReach(shape.plane, boxes[b], body, settings.gravity, settings.timeStep) : 0.0f;
       if (!StaticNear(shape, boxes[b], bounds[b], std::max(margin, reach))) continue;
       const Manifold manifold = CollideStatic(shape, boxes[b], margin, reach);
       if (manifold.pointCount == 0) continue;

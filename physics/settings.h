@@ -52,8 +52,8 @@ struct WorldSettings {
   // hardContactIterations more times. Resting and crawling contacts stay under 7.5 mm deep and
   // 3 m/s (samples/*.json), so their clips are unchanged byte for byte; a landing like the 1 m
   // ragdoll drop's (4.4 m/s) does take these paths.
-  float contactRigidDepth = 0.008f;   // m
-  float contactImpactSpeed = 4.0f;    // m/s
+  float contactRigidDepth = 0.008f;  // m
+  float contactImpactSpeed = 4.0f;   // m/s
   int hardContactIterations = 2;
 
   // Joint softness for the point, axis-lock and limit parts of every joint. A soft joint under a

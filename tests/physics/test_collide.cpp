@@ -164,8 +164,9 @@ TEST_SUITE("collide") {
   TEST_CASE("plane-box: a reach beyond the speculative distance adds the near face's vertices only") {
     // A thin box 3 cm above the plane, tilted 10 deg: the 2 cm band alone finds nothing.
     const BoxShape box{{0.1f, 0.015f, 0.05f}};
-    const Transform t{{0.0f, 0.03f + 0.1f * std::sin(glm::radians(10.0f)) + 0.015f * std::cos(glm::radians(10.0f)), 0.0f},
-                      AxisAngle(10.0f, {0, 0, 1})};
+    const Transform t{
+        {0.0f, 0.03f + 0.1f * std::sin(glm::radians(10.0f)) + 0.015f * std::cos(glm::radians(10.0f)), 0.0f},
+        AxisAngle(10.0f, {0, 0, 1})};
     CHECK(CollidePlaneBox(PlaneShape{}, box, t, kSpeculative).pointCount == 0);
     CHECK(CollidePlaneBox(PlaneShape{}, box, t, kSpeculative, kSpeculative).pointCount == 0);
     // A 10 cm reach covers all eight corners (the highest is 9.4 cm up); the four of the bottom

@@ -176,7 +176,8 @@ TEST_SUITE("physics.contact_solver") {
       world.AddStaticPlane(PlaneShape{}, 0.8f);
       const BodyId box = AddBox(world, glm::vec3(0.0f), half, 0.4f, 0.8f, tilt);
       // Lowest corner at 0.3 m plus a tenth of a step's travel per start.
-      const float lift = 0.3f + 0.1f * float(start) * speed * world.Settings().timeStep - LowestCornerHeight(world, box);
+      const float lift =
+          0.3f + 0.1f * float(start) * speed * world.Settings().timeStep - LowestCornerHeight(world, box);
       world.SetTransform(box, Transform{glm::vec3(0.0f, lift, 0.0f), tilt});
       world.SetLinearVelocity(box, glm::vec3(1.0f, -speed, 0.0f));
       for (int i = 0; i < 120; ++i) {
