@@ -292,7 +292,8 @@ OrientedBox MakeOrientedBox(const BoxShape& box, const Transform& transform) {
   return {transform.position, glm::mat3_cast(transform.rotation), box.halfExtents};
 }
 
-Manifold CollidePlaneBox(const PlaneShape& plane, const OrientedBox& b, float speculativeDistance) {
+Manifold CollidePlaneBox(const PlaneShape& plane, const OrientedBox& b, float speculativeDistance,
+                         float reachDistance) {
   RISE_ASSERT(std::fabs(glm::dot(plane.normal, plane.normal) - 1.0f) < 1e-3f);
   Manifold manifold;
   manifold.normal = plane.normal;
@@ -309,12 +310,28 @@ Manifold CollidePlaneBox(const PlaneShape& plane, const OrientedBox& b, float sp
       vertices[x | y << 1 | 4] = pxy + halfAxis[2];
     }
   }
+  // Past the speculative distance (a fast box's wider reach) only the face turned most toward the
+  // plane counts: its far face's vertices sit over the same area, and the reduction to four
+  // points could keep one of them in place of the vertex that touches first.
+  int upAxis = 0;
+  int farSide = 0;  // bit upAxis of the far face's vertices
+  if (reachDistance > speculativeDistance) {
+    float upDot = 0.0f;
+    for (int i = 0; i < 3; ++i) {
+      const float d = glm::dot(plane.normal, b.axes[i]);
+      if (std::fabs(d) > std::fabs(upDot)) {
+        upAxis = i;
+        upDot = d;
+      }
+    }
+    farSide = upDot > 0.0f ? 1 : 0;
+  }
   Candidate candidates[8];
   int count = 0;
   for (int v = 0; v < 8; ++v) {
     const glm::vec3& p = vertices[v];
     const float separation = glm::dot(plane.normal, p) - plane.offset;
-    if (separation < speculativeDistance) {
+    if (separation < speculativeDistance || (separation < reachDistance && ((v >> upAxis) & 1) != farSide)) {
       candidates[count++] = {p - plane.normal * (0.5f * separation), separation, static_cast<uint32_t>(v)};
     }
   }
@@ -323,8 +340,8 @@ Manifold CollidePlaneBox(const PlaneShape& plane, const OrientedBox& b, float sp
 }
 
 Manifold CollidePlaneBox(const PlaneShape& plane, const BoxShape& box, const Transform& boxTransform,
-                         float speculativeDistance) {
-  return CollidePlaneBox(plane, MakeOrientedBox(box, boxTransform), speculativeDistance);
+                         float speculativeDistance, float reachDistance) {
+  return CollidePlaneBox(plane, MakeOrientedBox(box, boxTransform), speculativeDistance, reachDistance);
 }
 
 Manifold CollideBoxes(const BoxShape& boxA, const Transform& transformA, const BoxShape& boxB,

@@ -60,10 +60,14 @@ struct OrientedBox {
 
 OrientedBox MakeOrientedBox(const BoxShape& box, const Transform& transform);
 
-// A = the static plane, B = the box; the normal is the plane normal.
-Manifold CollidePlaneBox(const PlaneShape& plane, const OrientedBox& box, float speculativeDistance);
+// A = the static plane, B = the box; the normal is the plane normal. A `reachDistance` above
+// speculativeDistance widens the speculative band for a box closing on the plane fast: vertices
+// of the box's face turned toward the plane count while closer than it, the far face's vertices
+// only while closer than speculativeDistance (the default 0 widens nothing).
+Manifold CollidePlaneBox(const PlaneShape& plane, const OrientedBox& box, float speculativeDistance,
+                         float reachDistance = 0.0f);
 Manifold CollidePlaneBox(const PlaneShape& plane, const BoxShape& box, const Transform& boxTransform,
-                         float speculativeDistance);
+                         float speculativeDistance, float reachDistance = 0.0f);
 
 // Separating-axis test over the 15 box axes, then clipping of the incident face
 // against the reference face's side planes (Sutherland-Hodgman), reduced to at

@@ -59,6 +59,9 @@ struct SolverContext {
   Softness staticContactSoftness;  // against static geometry: twice as stiff (Box2D v3)
   Softness jointSoftness;
   float contactPushMaxSpeed = 0.0f;  // m/s
+  float contactRigidDepth = 0.0f;    // m (WorldSettings: hard contacts)
+  float contactImpactSpeed = 0.0f;   // m/s
+  float stepTime = 0.0f;             // s, the whole step: how far ahead the rigid depth looks
   bool warmStart = true;
 };
 

@@ -43,6 +43,7 @@ struct Contact {
   float friction = 0.0f;
   ContactPoint points[kMaxManifoldPoints];
   int pointCount = 0;
+  bool hard = false;  // static contacts: a point was hard in the last solve (WorldSettings)
 };
 
 struct Aabb {

@@ -10,6 +10,12 @@
 //   s <= 0 and useBias: soft, bias = max(biasRate s, -pushMaxSpeed); impulse scaled by the
 //   softness (constraint_parts.h), twice as stiff against static geometry. Accumulated impulse >= 0.
 //   At rest the soft normal row settles at s = -g / (2 pi f)^2: 0.07 mm on the ground at 60 Hz.
+//   Hard points on static geometry (WorldSettings, "hard contacts"): s < -d/2 and
+//   s + min(Cdot, 0) T < -d (d the rigid depth, T the step), or Cdot < -impact speed. The row of a
+//   hard overlapping point is rigid (massScale 1, impulseScale 0) with the same bias.
+//   Why: the soft row's steady state under a load of lambda per sub-step is
+//   s = -lambda / (a2 m biasRate), with m the effective mass at the point, so a light hand pressed
+//   by a heavy trunk through its joints settles centimetres deep however stiff the spring is.
 // Friction rows along the tangents t1, t2 (same form with t instead of n), no bias; the
 // accumulated tangent impulse vector is clamped to the disc |lambda_t| <= mu lambda_n (Coulomb cone).
 // Anchors, inverse inertias and effective masses are frozen at PrepareContacts, as in Box2D v3:
@@ -94,27 +100,40 @@ void WarmStartContact(const Contact& contact, Body& a, Body& b) {
   }
 }
 
+// Returns whether a point of a static contact was hard. Inlined into its loop as it was before
+// it had a second caller (ResolveHardContact): 1 % of the fast drop's instructions per step.
 template <bool kStaticA>
-void SolveContact(Contact& contact, Body& a, Body& b, const SolverContext& context, bool useBias) {
+[[gnu::always_inline]] inline bool SolveContact(Contact& contact, Body& a, Body& b, const SolverContext& context,
+                                                bool useBias) {
   const glm::vec3 n = contact.normal;
   // Static geometry has no step deltas: its side of the separation update is zero.
   const float approach =
       kStaticA ? glm::dot(n, b.deltaPosition) : glm::dot(n, b.deltaPosition - a.deltaPosition);
   const Softness& pushSoftness = kStaticA ? context.staticContactSoftness : context.contactSoftness;
+  bool hard = false;
 
   for (int i = 0; i < contact.pointCount; ++i) {
     ContactPoint& cp = contact.points[i];
     float s = cp.separation + approach + glm::dot(b.deltaRotation, cp.crossB[0]);
     if constexpr (!kStaticA) s -= glm::dot(a.deltaRotation, cp.crossA[0]);
+    const float vn = RowVelocity<kStaticA>(a, b, cp, n, 0);
+    // Between bodies every row stays soft: two limbs overlapping deeply (a start pose, a hand in
+    // the trunk) are also held by joints, and rigid rows fighting them threw limbs at 10-29 m/s
+    // in the stress runner.
+    bool rigid = false;
+    if constexpr (kStaticA) {
+      rigid = s < -0.5f * context.contactRigidDepth &&
+              s + std::min(vn, 0.0f) * context.stepTime < -context.contactRigidDepth;
+      hard = hard || rigid || vn < -context.contactImpactSpeed;
+    }
     float bias = 0.0f;
     Softness soft = kRigid;
     if (s > 0.0f) {
       bias = s * context.invH;
     } else if (useBias) {
-      soft = pushSoftness;
-      bias = std::max(soft.biasRate * s, -context.contactPushMaxSpeed);
+      soft = rigid ? kRigid : pushSoftness;
+      bias = std::max(pushSoftness.biasRate * s, -context.contactPushMaxSpeed);
     }
-    const float vn = RowVelocity<kStaticA>(a, b, cp, n, 0);
     // A speculative point that is not closing its gap this sub-step stays at zero impulse.
     if (cp.normalImpulse == 0.0f && vn + bias >= 0.0f) continue;
     const float impulse = -soft.massScale * cp.mass[0] * (vn + bias) - soft.impulseScale * cp.normalImpulse;
@@ -143,6 +162,14 @@ void SolveContact(Contact& contact, Body& a, Body& b, const SolverContext& conte
     ApplyRowImpulse<kStaticA>(a, b, cp, contact.tangent[0], 1, new0 - old0);
     ApplyRowImpulse<kStaticA>(a, b, cp, contact.tangent[1], 2, new1 - old1);
   }
+  return hard;
+}
+
+// The second solve of a hard static contact (SolveContacts), out of line so that the first,
+// which every static contact takes, stays inlined in its loop.
+[[gnu::noinline]] void ResolveHardContact(Contact& contact, Body& staticBody, Body& b, const SolverContext& context,
+                                          bool useBias) {
+  SolveContact<true>(contact, staticBody, b, context, useBias);
 }
 
 }  // namespace
@@ -172,15 +199,26 @@ void WarmStartContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies
   }
 }
 
-void SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Body& staticBody,
+bool SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Body& staticBody,
                    const SolverContext& context, bool useBias) {
+  bool anyHard = false;
   for (Contact& contact : contacts) {
     if (contact.bodyA >= 0) {
       SolveContact<false>(contact, bodies[contact.bodyA], bodies[contact.bodyB], context, useBias);
     } else {
-      SolveContact<true>(contact, staticBody, bodies[contact.bodyB], context, useBias);
+      contact.hard = SolveContact<true>(contact, staticBody, bodies[contact.bodyB], context, useBias);
+      anyHard = anyHard || contact.hard;
     }
   }
+  // Static contacts sort first (contact.cpp), so the body pairs push last: a hand under a landing
+  // trunk got the trunk's push after its ground contact had spoken and sank. A hard static
+  // contact is solved once more, so the ground has the last word; no other contact comes here.
+  if (!anyHard) return false;
+  for (Contact& contact : contacts) {
+    if (contact.bodyA >= 0) break;
+    if (contact.hard) ResolveHardContact(contact, staticBody, bodies[contact.bodyB], context, useBias);
+  }
+  return true;
 }
 
 }  // namespace rise::physics

@@ -15,7 +15,8 @@ namespace rise::physics {
 void PrepareContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Body& staticBody,
                      const SolverContext& context);
 void WarmStartContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Body& staticBody);
-void SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Body& staticBody,
+// Returns whether a point on static geometry was hard (WorldSettings: hard contacts).
+bool SolveContacts(std::vector<Contact>& contacts, std::vector<Body>& bodies, Body& staticBody,
                    const SolverContext& context, bool useBias);
 
 }  // namespace rise::physics

@@ -44,6 +44,9 @@ SolverContext MakeContext(const WorldSettings& settings) {
   const float jointHertz = std::min(settings.jointHertz, 0.25f * context.invH);
   context.jointSoftness = MakeSoftness(jointHertz, settings.jointDampingRatio, context.h);
   context.contactPushMaxSpeed = settings.contactPushMaxSpeed;
+  context.contactRigidDepth = settings.contactRigidDepth;
+  context.contactImpactSpeed = settings.contactImpactSpeed;
+  context.stepTime = settings.timeStep;
   context.warmStart = settings.enableWarmStarting;
   return context;
 }
@@ -71,7 +74,20 @@ void WarmStart(WorldState& state) {
 // exactJoints: whether this pass ends with the joint forest's exact solve (kDirectTree only).
 void Solve(WorldState& state, const SolverContext& context, bool useBias, bool exactJoints) {
   SolveJoints(state.joints, state.bodies, state.staticBody, context, useBias);
-  SolveContacts(state.contacts, state.bodies, state.staticBody, context, useBias);
+  bool hard = SolveContacts(state.contacts, state.bodies, state.staticBody, context, useBias);
+  // A hard contact (settings.h) is a limb the ground stops while the body above it still moves:
+  // one joint pass hands on only part of that stop, and the soft joint rows leak, so the joint
+  // next to the limb opened by 1-1.5 cm in one step. More joint passes with rigid rows carry the
+  // stop up the chain. Passes without hard contacts, all of a resting or crawling body's, skip it.
+  if (hard && state.settings.hardContactIterations > 0) {
+    SolverContext hardContext = context;
+    hardContext.jointSoftness.massScale = 1.0f;
+    hardContext.jointSoftness.impulseScale = 0.0f;
+    for (int i = 0; hard && i < state.settings.hardContactIterations; ++i) {
+      SolveJoints(state.joints, state.bodies, state.staticBody, hardContext, useBias);
+      hard = SolveContacts(state.contacts, state.bodies, state.staticBody, context, useBias);
+    }
+  }
   // Last, so the joints' anchors have the final word in every pass: contacts forgive a little
   // overlap (soft, and the next pass corrects it) where an open joint would show on screen.
   if (state.jointTree.active && exactJoints) {

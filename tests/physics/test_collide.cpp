@@ -161,6 +161,25 @@ TEST_SUITE("collide") {
     CHECK(far.pointCount == 0);
   }
 
+  TEST_CASE("plane-box: a reach beyond the speculative distance adds the near face's vertices only") {
+    // A thin box 3 cm above the plane, tilted 10 deg: the 2 cm band alone finds nothing.
+    const BoxShape box{{0.1f, 0.015f, 0.05f}};
+    const Transform t{
+        {0.0f, 0.03f + 0.1f * std::sin(glm::radians(10.0f)) + 0.015f * std::cos(glm::radians(10.0f)), 0.0f},
+        AxisAngle(10.0f, {0, 0, 1})};
+    CHECK(CollidePlaneBox(PlaneShape{}, box, t, kSpeculative).pointCount == 0);
+    CHECK(CollidePlaneBox(PlaneShape{}, box, t, kSpeculative, kSpeculative).pointCount == 0);
+    // A 10 cm reach covers all eight corners (the highest is 9.4 cm up); the four of the bottom
+    // face (body -y) are kept and the top face's, over the same area, are not.
+    const Manifold m = CollidePlaneBox(PlaneShape{}, box, t, kSpeculative, 0.1f);
+    REQUIRE(m.pointCount == 4);
+    CHECK(IdsDistinct(m));
+    for (int i = 0; i < m.pointCount; ++i) {
+      CHECK((m.points[i].id & 2u) == 0u);  // vertex bit 1 is the body's y sign
+      CHECK(m.points[i].separation == doctest::Approx(BoxVertex(box, t, int(m.points[i].id)).y).epsilon(1e-4));
+    }
+  }
+
   TEST_CASE("plane-box: a turned box resting on a tilted, offset plane") {
     const glm::vec3 normal =
         glm::normalize(glm::vec3(std::sin(glm::radians(20.0f)), std::cos(glm::radians(20.0f)), 0.3f));

@@ -93,6 +93,28 @@ TEST_SUITE("physics.world") {
     CHECK(groundForce == doctest::Approx(totalMass * 9.81f).epsilon(0.02));
   }
 
+  // The stress runner's worst drops: hands and feet reach the ground at 10-12 m/s while the trunk
+  // is still falling behind them. Every box stays within the clips' 2 cm ground bar.
+  TEST_CASE_TEMPLATE("the 15-box ragdoll thrown at the ground at 12 m/s keeps every box within 2 cm of it", T,
+                     RISE_JOINT_SOLVERS) {
+    scenes::RagdollScene scene = scenes::MakeRagdollDropScene();
+    scene.dropHeight = 0.3f;
+    World world(rise::test::WithJointSolver<T>());
+    const scenes::BuiltRagdoll ragdoll = scenes::BuildRagdollDrop(scene, world);
+    for (BodyId body : ragdoll.bodies) world.SetLinearVelocity(body, glm::vec3(0.5f, -12.0f, 0.0f));
+    float deepest = 0.0f;
+    float worstJoint = 0.0f;
+    bool healthy = true;
+    for (int i = 0; i < 240; ++i) {
+      healthy = world.Step().Ok() && healthy;
+      for (BodyId body : ragdoll.bodies) deepest = std::max(deepest, -LowestCornerHeight(world, body));
+      for (JointId joint : ragdoll.joints) worstJoint = std::max(worstJoint, world.GetJointAnchorSeparation(joint));
+    }
+    INFO("deepest " << deepest << " m, worst joint " << worstJoint << " m");
+    CHECK(healthy);
+    CHECK(deepest < 0.02f);
+  }
+
   TEST_CASE_TEMPLATE("jointed bodies do not collide; category and mask bits filter pairs", T, RISE_JOINT_SOLVERS) {
     World world(rise::test::WithJointSolver<T>());
     world.AddStaticPlane(PlaneShape{}, 0.6f);
