@@ -126,6 +126,7 @@ class RiseController {
   // side, pivoting on the edge it rolls over, the chest turned `twist` further.
   TrunkPose RolledTrunk(const BodyReading& reading, float angle, float twist) const;
   Move PlanPlace(const BodyReading& reading);
+  Move PlanHandsDown(const BodyReading& reading) const;  // the hands left hovering by the place come straight down
   Move PlanPush(const BodyReading& reading);
   Move PlanCrawl(const BodyReading& reading);
   // Both soles flat on the ground.

@@ -194,16 +194,17 @@ TEST_CASE("phase 2: from a deep squat on flat feet the body rises and stands sti
   CHECK(quality.jumpOk);
 }
 
-// Prone starts of tall bodies the whole controller brings to a stand (phase 0
-// place and push, phase 1 feet in, heels down and sit back, phase 2 rise),
+// Prone starts the whole controller brings to a stand (phase 0 place, hands
+// down and push, phase 1 feet in, heels down and sit back, phase 2 rise),
 // through the loader as the command line runs them. bench/prone_variants
-// measures the rate over more starts (14 of 36 at 20 s: 14 of the 18 bodies of
-// 1.75 m and taller, none shorter).
+// measures the rate over more starts (13 of 36 at 20 s). Which starts stand is
+// chaotic: when the place learned to put the hands down at rest, the stands
+// moved from the tallest bodies to these.
 constexpr std::array<const char*, 4> kStandingStarts = {
-    R"({"character":{"height_m":1.75,"mass_kg":76},"start":{"posture":"prone","heading_deg":111},"seed":4})",
-    R"({"character":{"height_m":1.80,"mass_kg":83},"start":{"posture":"prone","heading_deg":148},"seed":5})",
-    R"({"character":{"height_m":1.85,"mass_kg":90},"start":{"posture":"prone","heading_deg":185},"seed":6})",
-    R"({"character":{"height_m":1.75,"mass_kg":69},"start":{"posture":"prone","heading_deg":333},"seed":10})"};
+    R"({"character":{"height_m":1.65,"mass_kg":62},"start":{"posture":"prone","heading_deg":37},"seed":2})",
+    R"({"character":{"height_m":1.65,"mass_kg":55},"start":{"posture":"prone","heading_deg":259},"seed":8})",
+    R"({"character":{"height_m":1.65,"mass_kg":97},"start":{"posture":"prone","heading_deg":121},"seed":14})",
+    R"({"character":{"height_m":1.60,"mass_kg":76},"start":{"posture":"prone","heading_deg":168},"seed":25})"};
 
 TEST_CASE("phases 0 to 2: lying prone, the body gets up on its hands and feet, brings its feet in and stands") {
   // The controller is chaotic (a millimetre early on changes which step
@@ -260,9 +261,7 @@ TEST_CASE("a clip that stands ends on a still, neutral stand an engine can blend
   CHECK(glm::degrees(std::acos(std::min(1.0f, up.y))) < 10.0f);
 }
 
-// Known to fail: a planted hand slides 25-35 cm while the feet walk in to it.
-// Drop may_fail once the crawl holds its hands.
-TEST_CASE("phases 0 to 2: no hand or foot slides along the ground on the way up" * doctest::may_fail()) {
+TEST_CASE("phases 0 to 2: no hand or foot slides along the ground on the way up") {
   for (const char* text : kStandingStarts) {
     INFO(text);
     const auto spec = rise::ParseRiseSpec(text, "start.json");
