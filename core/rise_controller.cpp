@@ -1197,8 +1197,16 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   const bool putDown = Clearance(r, limb) > kLandedClearance;
   static constexpr std::array<float, 5> kFractions{1.0f, 0.75f, 0.5f, 0.3f, 0.15f};
   float nominalFootStep = 0.0f;
-  for (const float candidate : kFractions) {
-    const float fraction = putDown ? 0.0f : candidate;
+  // A foot steps with the CoM held at FootLiftCom; if no step length is
+  // reachable so, each is tried again with the CoM held where it is (safe: a
+  // foot only lifts with the CoM already inside the other three's support).
+  // After a roll the bear stance is about 10 cm longer than after a prone start,
+  // and with the CoM at FootLiftCom the held foot's leg fell ~2 cm short of it
+  // at every step length: the feet shuffled in place for the rest of the crawl.
+  const bool comMayStay = !IsArm(limb) && !putDown;
+  for (size_t k = 0; k < (comMayStay ? 2 : 1) * kFractions.size(); ++k) {
+    const bool comStays = k >= kFractions.size();
+    const float fraction = putDown ? 0.0f : kFractions[k % kFractions.size()];
     Move move = OnAllFours(r, IsArm(limb) ? "hand step" : "foot step", 0.7);
     LimbMove& m = move.limbs[i] = HoldLimb(r, limb, false);
     if (IsArm(limb)) {
@@ -1244,10 +1252,12 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     // for it touching down there: reaching for the aim pulled the body over.
     const float aimBelow = putDown ? kLandingReach : 0.0f;
     m.to += ground_.normal * aimBelow;
-    PlanTrunk(move, IsArm(limb) ? r.com : FootLiftCom(r, limb), {limb != Limb::kHandLeft, limb != Limb::kHandRight});
+    PlanTrunk(move, IsArm(limb) || comStays ? r.com : FootLiftCom(r, limb), {limb != Limb::kHandLeft, limb != Limb::kHandRight});
     move.limbs[i].to -= ground_.normal * aimBelow;
-    best = move;
-    if (putDown || Reachable(move)) break;
+    const bool reachable = putDown || Reachable(move);
+    // None reachable: the shortest step with the CoM at FootLiftCom, as before.
+    if (!comStays || reachable) best = move;
+    if (reachable) break;
   }
   if (!putDown) stepSpot_[i] = best.limbs[i].to;
   // The feet are as far in as this body bent at the hips lets them come: the
