@@ -1030,8 +1030,8 @@ SupportPolygon RiseController::StanceWithout(const BodyReading& r, Limb lifted) 
 }
 
 float RiseController::CrawlComHeight(const BodyReading& r) const {
-  // Hips high while the feet are far (a pike), lower into a squat as the CoM nears them.
-  // The hips rise into a pike as the feet walk in under them.
+  // The hips rise from the bear stance's height into a pike as the feet walk in
+  // under them.
   const float handsAhead = HandsAhead(r);
   const float in = std::clamp((1.1f - handsAhead) / (1.1f - kFootWalkDistance), 0.0f, 1.0f);
   return glm::mix(crawlComHeight_, kPikeComRatio * standComHeight_, in);
