@@ -89,7 +89,7 @@ class RiseController {
   };
   enum class LimbMode { kWorld, kToePivot, kBody, kJoint };
   // The roll's moves, in order (see PlanRoll).
-  enum class RollStage { kNone, kTuck, kPush, kOver, kLie };
+  enum class RollStage { kNone, kTuck, kPush, kOver, kLie, kArmOut };
   struct LimbMove {
     LimbMode mode = LimbMode::kWorld;
     // wrist/ankle (kWorld), toe point (kToePivot), in the trunk frame (kBody), or the
@@ -125,6 +125,8 @@ class RiseController {
   // The measured trunk turned on by `angle` about its long axis toward the roll
   // side, pivoting on the edge it rolls over, the chest turned `twist` further.
   TrunkPose RolledTrunk(const BodyReading& reading, float angle, float twist) const;
+  // After a roll, an arm lying overhead comes out to the side (none there: nullopt).
+  std::optional<Move> PlanArmOut(const BodyReading& reading) const;
   Move PlanPlace(const BodyReading& reading);
   Move PlanHandsDown(const BodyReading& reading) const;  // the hands left hovering by the place come straight down
   Move PlanPush(const BodyReading& reading);
@@ -243,6 +245,7 @@ class RiseController {
   std::array<std::optional<glm::vec3>, kLimbCount> stepSpot_{};
   float rollSign_ = 0.0f;                   // +1 rolling onto the left side, -1 onto the right; 0 before the roll
   RollStage rollStage_ = RollStage::kNone;  // the roll's last move
+  int rollMoves_ = 0;                       // moves since this roll started
   glm::vec3 heading_{0.0f, 0.0f, 1.0f};
   glm::vec3 balanceOffset_{0.0f};
   float balanceLean_ = 0.0f;

@@ -59,7 +59,7 @@ RollOutcome Roll(rise::Posture posture, double heightM, double massKg) {
   spec.character.massKg = massKg;
   spec.start.posture = posture;
   spec.fps = 240.0;  // the engine's rate: one frame per trace sample, so no fast step is missed
-  spec.maxDurationS = 7.0;
+  spec.maxDurationS = 9.0;
   rise::GenerateSettings settings;
   settings.keepTrace = true;
   const rise::GeneratedClip result = rise::GenerateClip(spec, settings);
@@ -349,15 +349,15 @@ TEST_CASE("metadata: phases tile the clip, contacts name effectors, peak torques
 }
 
 TEST_CASE("roll: from the back or a side the body rolls onto its front and the prone path places and pushes") {
-  // The roll's bars: on the front and into place within about 4 s of the
-  // start (settling included), nothing sunk into the ground, no hand or foot
+  // The roll's bars: on the front, the arm it rolled over drawn out from
+  // overhead, and into place within about 6 s of the start (settling included), nothing sunk into the ground, no hand or foot
   // whipped round (stress runs once found them at 10-16 m/s mid-roll), and a
   // foot planted to push the body over not skating on the ground.
   for (const RollStart& start : kRollStarts) {
     INFO(std::string(rise::PostureName(start.posture)) << ", " << start.heightM << " m, " << start.massKg << " kg");
     const RollOutcome roll = Roll(start.posture, start.heightM, start.massKg);
     CHECK(roll.placeTime > 0.0);
-    CHECK(roll.placeTime < 4.5);
+    CHECK(roll.placeTime < 6.0);
     CHECK(roll.pushed);
     CHECK(roll.penetration <= 0.02);
     CHECK(roll.limbSpeed <= 6.0);
