@@ -185,46 +185,59 @@ struct MotorGains {
   glm::vec3 feedForward{0.0f}; // N m, world, torque on B (A gets the opposite)
 };
 
-// Inverse effective mass (K + gamma 1)^-1 of a PD motor over `count` (1..3) world axes, with
-// K_ij = u_i . (IA^-1 + IB^-1) u_j; the zero matrix when the motor has neither spring nor damper.
-// It depends only on the poses and the gains, so the solver computes it once per pose.
-inline glm::mat3 MotorPartMass(const glm::mat3& invInertiaSum, const glm::vec3* axes, int count,
-                               const MotorGains& gains, float h) {
+// The parts of a PD motor's solve over `count` (1..3) world axes that depend only on the poses,
+// the gains and h, so each pass measures nothing but Cdot (see the header comment).
+struct MotorPartTerms {
+  bool springy = false;       // c + h k > 0: otherwise the motor is the pure feed-forward torque
+  glm::mat3 mass{0.0f};       // (K + gamma 1)^-1, K_ij = u_i . (IA^-1 + IB^-1) u_j
+  float gamma = 0.0f;         // 1 / (h (c + h k))
+  float bias[3] = {};         // (beta / h) c_i for the errors c_i (rad) about the axes
+  float feedForward[3] = {};  // h u_i . tauFF, the feed-forward impulse about each axis
+};
+
+// Computes MotorPartTerms for errors c[i] measured about the axes. It is rebuilt whenever the
+// poses change, while every pass of a sub-step reuses it.
+inline MotorPartTerms MakeMotorPartTerms(const glm::mat3& invInertiaSum, const glm::vec3* axes, const float* c,
+                                         int count, const MotorGains& gains, float h) {
+  MotorPartTerms terms;
+  for (int i = 0; i < count; ++i) terms.feedForward[i] = h * glm::dot(axes[i], gains.feedForward);
   const float kh = gains.stiffness * h + gains.damping;
-  if (kh <= 0.0f) return glm::mat3(0.0f);
-  const float gamma = 1.0f / (h * kh);
+  if (kh <= 0.0f) return terms;
+  terms.springy = true;
+  terms.gamma = 1.0f / (h * kh);
+  const float betaOverH = gains.stiffness / kh;
+  for (int i = 0; i < count; ++i) terms.bias[i] = betaOverH * c[i];
+  // I^-1 u_j once per axis rather than once per entry of K.
+  glm::vec3 inertiaAxes[3];
+  for (int j = 0; j < count; ++j) inertiaAxes[j] = invInertiaSum * axes[j];
   glm::mat3 k(1.0f);
   for (int i = 0; i < count; ++i) {
-    for (int j = 0; j < count; ++j) k[j][i] = glm::dot(axes[i], invInertiaSum * axes[j]);
-    k[i][i] += gamma;
+    for (int j = 0; j < count; ++j) k[j][i] = glm::dot(axes[i], inertiaAxes[j]);
+    k[i][i] += terms.gamma;
   }
-  return glm::inverse(k);
+  terms.mass = glm::inverse(k);
+  return terms;
 }
 
-// PD motor part over `count` (1..3) world axes with errors c[i] (rad) measured about them and
-// `mass` from MotorPartMass. The accumulated impulse is in axis coordinates; the world torque it
-// makes is clamped to maxTorque h in norm (a universal joint's axes are not orthogonal once it
-// bends, so clamping the coordinates alone would let the torque exceed the cap).
-inline void SolveMotorPart(Body& a, Body& b, const glm::vec3* axes, const float* c, int count, const MotorGains& gains,
-                           const glm::mat3& mass, glm::vec3& accumulated, const SolverContext& context) {
-  const float h = context.h;
-  const float kh = gains.stiffness * h + gains.damping;
+// PD motor part over `count` (1..3) world axes with `terms` from MakeMotorPartTerms. The
+// accumulated impulse is in axis coordinates; the world torque it makes is clamped to maxTorque h
+// in norm (a universal joint's axes are not orthogonal once it bends, so clamping the coordinates
+// alone would let the torque exceed the cap).
+inline void SolveMotorPart(Body& a, Body& b, const glm::vec3* axes, int count, const MotorGains& gains,
+                           const MotorPartTerms& terms, glm::vec3& accumulated, const SolverContext& context) {
   glm::vec3 target = accumulated;
-  if (kh > 0.0f) {
-    const float gamma = 1.0f / (h * kh);
-    const float betaOverH = gains.stiffness / kh;
+  if (terms.springy) {
     const glm::vec3 relativeW = b.angularVelocity - a.angularVelocity;
     glm::vec3 rhs(0.0f);
     for (int i = 0; i < count; ++i) {
-      rhs[i] = glm::dot(axes[i], relativeW) + betaOverH * c[i] +
-               gamma * (accumulated[i] - h * glm::dot(axes[i], gains.feedForward));
+      rhs[i] = glm::dot(axes[i], relativeW) + terms.bias[i] + terms.gamma * (accumulated[i] - terms.feedForward[i]);
     }
-    target = accumulated - mass * rhs;
+    target = accumulated - terms.mass * rhs;
   } else {
     // No spring and no damper: the motor is a pure torque.
-    for (int i = 0; i < count; ++i) target[i] = h * glm::dot(axes[i], gains.feedForward);
+    for (int i = 0; i < count; ++i) target[i] = terms.feedForward[i];
   }
-  const float maxImpulse = gains.maxTorque * h;
+  const float maxImpulse = gains.maxTorque * context.h;
   glm::vec3 worldTarget(0.0f);
   for (int i = 0; i < count; ++i) worldTarget += target[i] * axes[i];
   const float norm = glm::length(worldTarget);

@@ -23,16 +23,16 @@ namespace rise::physics {
 
 namespace {
 
-void UpdateRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows) {
+void UpdateRows(const Joint& joint, const glm::quat& frameA, const glm::quat& frameB, AngularRows& rows) {
   switch (joint.type) {
     case JointType::kBall:
-      BallRows(joint, a, b, rows);
+      BallRows(joint, frameA, frameB, rows);
       return;
     case JointType::kHinge:
-      HingeRows(joint, a, b, rows);
+      HingeRows(joint, frameA, frameB, rows);
       return;
     case JointType::kUniversal:
-      UniversalRows(joint, a, b, rows);
+      UniversalRows(joint, frameA, frameB, rows);
       return;
   }
   RISE_ASSERT_MSG(false, "unknown joint type");
@@ -60,11 +60,23 @@ glm::vec3 AngularImpulse(const Joint& joint, const AngularRows& rows) {
   return impulse;
 }
 
+// The joint frames in world space and the bodies' summed inverse inertia: what both the rows and
+// the motor are built from, evaluated once for the two.
+struct JointPose {
+  glm::quat frameA, frameB;
+  glm::mat3 invInertiaSum;
+};
+
+JointPose PoseOf(const Joint& joint, const Body& a, const Body& b) {
+  return JointPose{a.transform.rotation * joint.localFrameA, b.transform.rotation * joint.localFrameB,
+                   a.invInertiaWorld + b.invInertiaWorld};
+}
+
 // The pose-only part of UpdateJointGeometry: rows, their effective masses and the lever arms.
-void UpdateJointRows(Joint& joint, const Body& a, const Body& b) {
+void UpdateJointRows(Joint& joint, const Body& a, const Body& b, const JointPose& pose) {
   AngularRows& rows = joint.rows;
-  UpdateRows(joint, a, b, rows);
-  const glm::mat3 invInertiaSum = a.invInertiaWorld + b.invInertiaWorld;
+  UpdateRows(joint, pose.frameA, pose.frameB, rows);
+  const glm::mat3& invInertiaSum = pose.invInertiaSum;
   for (int i = 0; i < rows.lockCount; ++i) rows.lockMass[i] = AngularEffectiveMass(invInertiaSum, rows.lockAxis[i]);
   for (int i = 0; i < rows.limitCount; ++i) rows.limitMass[i] = AngularEffectiveMass(invInertiaSum, rows.limitAxis[i]);
   joint.leverA = a.transform.rotation * joint.localAnchorA;
@@ -72,15 +84,16 @@ void UpdateJointRows(Joint& joint, const Body& a, const Body& b) {
   joint.rowsCurrent = true;
 }
 
-// The motor's error and mass also depend on its target and gains (set between steps) and on h.
-void UpdateMotorRows(Joint& joint, const Body& a, const Body& b, const SolverContext& context) {
+// The motor's error and terms also depend on its target and gains (set between steps) and on h.
+void UpdateMotorRows(Joint& joint, const JointPose& pose, const SolverContext& context) {
   const AngularRows& rows = joint.rows;
   if (!joint.motor.enabled || rows.motorCount == 0) return;
-  const glm::quat targetB = a.transform.rotation * joint.localFrameA * joint.motor.target;
-  const glm::vec3 error = RotationVector(b.transform.rotation * joint.localFrameB * glm::conjugate(targetB));
-  for (int i = 0; i < rows.motorCount; ++i) joint.motorError[i] = glm::dot(rows.motorAxis[i], error);
-  joint.motorMass = MotorPartMass(a.invInertiaWorld + b.invInertiaWorld, rows.motorAxis, rows.motorCount,
-                                  MotorGainsOf(joint.motor), context.h);
+  const glm::quat targetB = pose.frameA * joint.motor.target;
+  const glm::vec3 error = RotationVector(pose.frameB * glm::conjugate(targetB));
+  float motorError[3];
+  for (int i = 0; i < rows.motorCount; ++i) motorError[i] = glm::dot(rows.motorAxis[i], error);
+  joint.motorTerms = MakeMotorPartTerms(pose.invInertiaSum, rows.motorAxis, motorError, rows.motorCount,
+                                        MotorGainsOf(joint.motor), context.h);
 }
 
 }  // namespace
@@ -133,14 +146,16 @@ void PrepareJoint(Joint& joint, const Body& a, const Body& b, const SolverContex
     joint.motorImpulse = glm::vec3(0.0f);
     joint.motorTorqueWorld = glm::vec3(0.0f);
   }
+  const JointPose pose = PoseOf(joint, a, b);
   // The last position integration of the previous step left the rows at these very poses.
-  if (!joint.rowsCurrent) UpdateJointRows(joint, a, b);
-  UpdateMotorRows(joint, a, b, context);
+  if (!joint.rowsCurrent) UpdateJointRows(joint, a, b, pose);
+  UpdateMotorRows(joint, pose, context);
 }
 
 void UpdateJointGeometry(Joint& joint, const Body& a, const Body& b, const SolverContext& context) {
-  UpdateJointRows(joint, a, b);
-  UpdateMotorRows(joint, a, b, context);
+  const JointPose pose = PoseOf(joint, a, b);
+  UpdateJointRows(joint, a, b, pose);
+  UpdateMotorRows(joint, pose, context);
 }
 
 namespace {
@@ -149,11 +164,8 @@ void SolveJoint(Joint& joint, Body& a, Body& b, const SolverContext& context, bo
   const AngularRows& rows = joint.rows;
 
   if (joint.motor.enabled && rows.motorCount > 0) {
-    SolveMotorPart(a, b, rows.motorAxis, joint.motorError, rows.motorCount, MotorGainsOf(joint.motor), joint.motorMass,
+    SolveMotorPart(a, b, rows.motorAxis, rows.motorCount, MotorGainsOf(joint.motor), joint.motorTerms,
                    joint.motorImpulse, context);
-    glm::vec3 torque(0.0f);
-    for (int i = 0; i < rows.motorCount; ++i) torque += joint.motorImpulse[i] * rows.motorAxis[i];
-    joint.motorTorqueWorld = context.invH * torque;
   }
 
   for (int i = 0; i < rows.limitCount; ++i) {
@@ -189,8 +201,16 @@ void SolveJoints(std::vector<Joint>& joints, std::vector<Body>& bodies, Body& st
   }
 }
 
-void StoreJointWarmStarts(std::vector<Joint>& joints) {
-  for (Joint& joint : joints) joint.angularImpulse = AngularImpulse(joint, joint.rows);
+void StoreJointWarmStarts(std::vector<Joint>& joints, const SolverContext& context) {
+  for (Joint& joint : joints) {
+    const AngularRows& rows = joint.rows;
+    joint.angularImpulse = AngularImpulse(joint, rows);
+    if (joint.motor.enabled && rows.motorCount > 0) {
+      glm::vec3 torque(0.0f);
+      for (int i = 0; i < rows.motorCount; ++i) torque += joint.motorImpulse[i] * rows.motorAxis[i];
+      joint.motorTorqueWorld = context.invH * torque;
+    }
+  }
 }
 
 }  // namespace rise::physics

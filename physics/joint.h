@@ -123,8 +123,7 @@ struct Joint {
   // rows and lever arms were computed from the bodies' present poses: true after every position
   // integration, so the next step's PrepareJoint reuses them; World::SetTransform clears it.
   bool rowsCurrent = false;
-  float motorError[3] = {};              // c_i of the motor rows (when the motor is enabled), rad
-  glm::mat3 motorMass{0.0f};             // MotorPartMass of the motor rows (when enabled)
+  MotorPartTerms motorTerms;             // the motor rows' error terms and mass (when enabled)
 };
 
 // Builds the body-local joint from a world-space bind-pose definition.
@@ -147,13 +146,16 @@ void WarmStartJoints(std::vector<Joint>& joints, std::vector<Body>& bodies, Body
 void SolveJoints(std::vector<Joint>& joints, std::vector<Body>& bodies, Body& staticBody, const SolverContext& context,
                  bool useBias);
 // Sums the angular rows' impulses at the present rows into angularImpulse, which the next warm
-// start applies. Only its value after a sub-step's last pass is read, so the solver calls it there.
-void StoreJointWarmStarts(std::vector<Joint>& joints);
+// start applies, and the motor's into motorTorqueWorld. Only their values after a sub-step's last
+// pass are read, so the solver calls it there.
+void StoreJointWarmStarts(std::vector<Joint>& joints, const SolverContext& context);
 
 // Per-type geometry (joint_ball.cpp, joint_hinge.cpp, joint_universal.cpp), written into `rows`
 // in place: counts, axes, positions, angles and ranges (the effective masses are the caller's).
-void BallRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows);
-void HingeRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows);
-void UniversalRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows);
+// frameA = qA localFrameA and frameB = qB localFrameB, the joint frames in world space; the caller
+// computes them once for the rows and the motor.
+void BallRows(const Joint& joint, const glm::quat& frameA, const glm::quat& frameB, AngularRows& rows);
+void HingeRows(const Joint& joint, const glm::quat& frameA, const glm::quat& frameB, AngularRows& rows);
+void UniversalRows(const Joint& joint, const glm::quat& frameA, const glm::quat& frameB, AngularRows& rows);
 
 }  // namespace rise::physics

@@ -17,7 +17,7 @@
 
 namespace rise::physics {
 
-void BallRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows) {
+void BallRows(const Joint& joint, const glm::quat& frameA, const glm::quat& frameB, AngularRows& rows) {
   rows.lockCount = 0;
   rows.limitCount = 0;
   rows.motorCount = 3;
@@ -26,8 +26,6 @@ void BallRows(const Joint& joint, const Body& a, const Body& b, AngularRows& row
   rows.motorAxis[2] = glm::vec3(0.0f, 0.0f, 1.0f);
   if (!joint.enableLimits) return;
 
-  const glm::quat frameA = a.transform.rotation * joint.localFrameA;
-  const glm::quat frameB = b.transform.rotation * joint.localFrameB;
   const glm::vec3 xA = frameA * glm::vec3(1.0f, 0.0f, 0.0f);
   const glm::vec3 xB = frameB * glm::vec3(1.0f, 0.0f, 0.0f);
 

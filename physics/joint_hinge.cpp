@@ -16,9 +16,7 @@
 
 namespace rise::physics {
 
-void HingeRows(const Joint& joint, const Body& a, const Body& b, AngularRows& rows) {
-  const glm::quat frameA = a.transform.rotation * joint.localFrameA;
-  const glm::quat frameB = b.transform.rotation * joint.localFrameB;
+void HingeRows(const Joint& joint, const glm::quat& frameA, const glm::quat& frameB, AngularRows& rows) {
   const glm::vec3 a1 = frameA * glm::vec3(1.0f, 0.0f, 0.0f);
   const glm::vec3 b2 = frameB * glm::vec3(0.0f, 1.0f, 0.0f);
   const glm::vec3 c2 = frameB * glm::vec3(0.0f, 0.0f, 1.0f);
