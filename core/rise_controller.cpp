@@ -904,7 +904,8 @@ std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading
   // elbow bent and up, as a body lying prone draws an arm in. (Of the elbow-up
   // poses tried, flexion -30, abduction 80, elbow 90 deg stood the most rolled
   // starts. bench/prone_variants 200, supine/side_left/side_right, 30 s: 50,
-  // 63 and 78 stand; 0 of each without this move.)
+  // 63 and 78 stand; 0 of each without this move. Measured before supine
+  // starts took the log roll, which leaves no arm overhead.)
   Move move;
   move.name = "arm out";
   move.phase = RisePhase::kRoll;
@@ -956,7 +957,6 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
       pose = SolveBodyPose(def_.skeleton, rig_, reach);
       if (glm::length(pose.worldPositions[rig_.end[i]] - m.to) <= kReachTolerance) break;
     }
-    m.lift = HandSwingLift(hand);
     if (move_.name == "arm out" && move_.limbs[i].mode == LimbMode::kJoint) {
       // An arm just brought out from overhead is bent elbow-up at the side,
       // where the solution for the wrist's path starts in another branch: the
@@ -969,8 +969,8 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
       def_.JointAngles(rig_.lower[i], local[rig_.lower[i]], hinge);
       m = RollLimb(r, hand, {root[0], root[1], hinge[0], 0, 0});
       m.toRotation = local[rig_.end[i]];
-      m.lift = HandSwingLift(hand);
     }
+    m.lift = HandSwingLift(hand);
     m.delay = i == 0 ? 0.0f : 0.3f;
     m.span = 0.7f;
   }

@@ -273,8 +273,8 @@ TEST_CASE("a clip that stands ends on a still, neutral stand an engine can blend
   CHECK(glm::degrees(std::acos(std::min(1.0f, up.y))) < 10.0f);
 }
 
-// Starts on the back and on either side: the roll turns the body prone, the
-// arm it rolled over comes out from overhead, then the same place, push, crawl
+// Starts on the back and on either side: the roll turns the body prone (from
+// a side, the arm it rolled over then comes out from overhead), then the same place, push, crawl
 // and rise as the prone starts. (Their bear stance is longer than a prone
 // start's, so the foot steps hold the CoM where it is when FootLiftCom would
 // take the held foot out of reach.) The roll and the arm brought out add about
