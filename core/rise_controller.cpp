@@ -55,7 +55,10 @@ constexpr float kRiseMargin = 0.02f;  // m
 // The sit back puts the CoM this far behind the middle of the flat soles:
 // far enough in that the rise starts with room to brake a drift either way.
 constexpr float kSitBackBehindSoles = 0.1f;  // m
-constexpr float kSquatComRatio = 0.45f;    // CoM height in the squat the crawl ends in, of the standing CoM height
+// CoM height in the squat the crawl ends in, of the standing CoM height. Measured with
+// bench/prone_variants (prone 20 s, supine and sides 30 s): 0.45 stood 69 of 144 starts,
+// 0.50 and 0.55 alike (151 and 149 of 288).
+constexpr float kSquatComRatio = 0.55f;
 // The sit back hands over to the rise once the CoM is within this of the soles.
 constexpr float kSitBackReach = 0.05f;  // m
 constexpr float kFlatSole = glm::radians(12.0f);  // a sole tilted less than this is flat
@@ -293,6 +296,11 @@ SupportPolygon RiseController::SupportRegion(const BodyReading& r) const {
   return SupportPolygon::FromPoints(points);
 }
 
+glm::vec3 RiseController::CapturePoint(const BodyReading& r) const {
+  const float omega = std::sqrt(9.81f / std::max(0.3f, Height(ground_, r.com)));
+  return r.com + r.comVelocity / omega;
+}
+
 glm::vec3 RiseController::HeadingForward(const BodyReading& r) const {
   // The direction from the pelvis toward the head, along the ground: the way
   // the body will face once it stands after rising over its feet.
@@ -389,7 +397,7 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
   };
   const float startPitch = pitchOf(move.from.pelvisRotation);
   const float startCurl = std::clamp(startPitch - pitchOf(move.from.chestRotation), kMinCurl, kMaxCurl);
-  constexpr int kUnknowns = 6, kResiduals = 3 + 3 * kLimbCount + 2 + 2 + 2;
+  constexpr int kUnknowns = 6, kResiduals = 3 + 3 * kLimbCount + 3 * 2 + 2 + 2 + 2;
   using Unknowns = std::array<float, kUnknowns>;
   using Residuals = std::array<float, kResiduals>;
   std::vector<int> heels;
@@ -420,16 +428,26 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
       const glm::vec3 miss = pose.worldPositions[rig_.end[i]] - goal.limbs[i].target;
       for (int k = 0; k < 3; ++k) r[3 + 3 * i + k] = kReachWeight * miss[k];
     }
+    // Sitting back, the planted feet also lie flat as planned: a squat deeper
+    // than the ankles' dorsiflexion lifted the heels 20 deg, and a rise from
+    // the toes with the CoM behind them fell back onto the ground. (Asked of
+    // every move, it cost the crawl's steps: 74 -> 50 of 144 starts stood.)
+    for (int i = 2; i < 4; ++i) {
+      if (!probe.limbs[i].planted || move.name != "sit back") continue;
+      const float halfLength = def_.skeleton.joints[rig_.end[i]].box.halfExtents.z;
+      const glm::vec3 tilt = pose.worldRotations[rig_.end[i]] * kUp - goal.limbs[i].endRotation * kUp;
+      for (int k = 0; k < 3; ++k) r[3 + 3 * kLimbCount + 3 * (i - 2) + k] = kReachWeight * halfLength * tilt[k];
+    }
     for (int i = 0; i < 2; ++i) {
       if (!bearingHands[i]) continue;
       const float reach = glm::length(LimbRoot(def_.skeleton, rig_, goal, static_cast<Limb>(i)) - goal.limbs[i].target);
-      r[3 + 3 * kLimbCount + i] = kStraightArmWeight * (reach - kSupportArmReach * armReach_);
+      r[3 + 3 * kLimbCount + 6 + i] = kStraightArmWeight * (reach - kSupportArmReach * armReach_);
     }
     // Knees stay off the ground: kneeling, the body would rest on joints the
     // plan does not count as supports.
     for (int leg = 2; leg < 4; ++leg) {
       const float height = Height(ground_, pose.worldPositions[rig_.lower[leg]]);
-      r[3 + 3 * kLimbCount + 2 + (leg - 2)] = kReachWeight * std::max(0.0f, kKneeClearance - height);
+      r[3 + 3 * kLimbCount + 6 + 2 + (leg - 2)] = kReachWeight * std::max(0.0f, kKneeClearance - height);
     }
     r[kResiduals - 2] = kPitchWeight * (x[3] - startPitch);
     r[kResiduals - 1] = kCurlWeight * x[5];
@@ -633,8 +651,7 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
     // The correction is bounded by what the feet can hold, the slide by what
     // the ankles allow with the feet flat where they are.
     const glm::vec3 target = BalancePoint(reading);
-    const float omega = std::sqrt(9.81f / std::max(0.3f, Height(ground_, reading.com)));
-    glm::vec3 capture = reading.com + reading.comVelocity / omega - target;
+    glm::vec3 capture = CapturePoint(reading) - target;
     capture -= ground_.normal * glm::dot(capture, ground_.normal);
     glm::vec3 correction = balanceOffset_ - kCaptureGain * capture;
     const float footLength = 2.0f * def_.skeleton.joints[rig_.end[2]].box.halfExtents.z;
@@ -1187,10 +1204,17 @@ bool RiseController::SolesDown(const BodyReading& r) const {
 }
 
 RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
-  const float comToFeet = FeetRegion(r).SignedDistance(Ground(r.com));
+  const SupportPolygon feet = FeetRegion(r);
+  const float comToFeet = feet.SignedDistance(Ground(r.com));
+  // The hands let go only with the CoM not on its way off the feet (its
+  // capture point on them too): the heels coming down can lift the hands and
+  // leave the body rocking forward, and rises begun so at 0.2-0.5 m/s carried
+  // the CoM past the toes before the legs were straight.
+  const bool steady = feet.SignedDistance(Ground(CapturePoint(r))) < 0.0f;
   // The sit back hands over to the rise a little short of the soles: the
   // rise's own balance takes the CoM the rest of the way.
-  if (comToFeet < -kRiseMargin || crawlSteps_ >= kMaxCrawlSteps || (move_.name == "sit back" && comToFeet < kSitBackReach)) {
+  if ((steady && (comToFeet < -kRiseMargin || (move_.name == "sit back" && comToFeet < kSitBackReach))) ||
+      crawlSteps_ >= kMaxCrawlSteps) {
     return PlanRise(r);
   }
   const std::vector<Limb> candidates = StepCandidates(r);

@@ -169,6 +169,8 @@ class RiseController {
   // Where Phase 2 keeps the CoM's ground projection.
   glm::vec3 BalancePoint(const BodyReading& reading) const;
   SupportPolygon SupportRegion(const BodyReading& reading) const;
+  // Where the CoM would come to rest as an inverted pendulum: CoM + velocity / omega.
+  glm::vec3 CapturePoint(const BodyReading& reading) const;
   glm::vec3 HeadingForward(const BodyReading& reading) const;
 
   // Placement helpers.
