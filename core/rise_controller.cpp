@@ -59,7 +59,7 @@ constexpr float kSitBackBehindSoles = 0.1f;  // m
 // bench/prone_variants (prone 20 s, supine and sides 30 s): 0.45 stood 69 of 144 starts,
 // 0.50 and 0.55 alike (151 and 149 of 288).
 constexpr float kSquatComRatio = 0.55f;
-// The sit back hands over to the rise once the CoM is within this of the soles.
+// A squat hands over to the rise once the CoM is within this of the soles.
 constexpr float kSitBackReach = 0.05f;  // m
 constexpr float kFlatSole = glm::radians(12.0f);  // a sole tilted less than this is flat
 // Supporting arms are kept straight, so the weight goes down the bones and
@@ -1211,9 +1211,12 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   // leave the body rocking forward, and rises begun so at 0.2-0.5 m/s carried
   // the CoM past the toes before the legs were straight.
   const bool steady = feet.SignedDistance(Ground(CapturePoint(r))) < 0.0f;
-  // The sit back hands over to the rise a little short of the soles: the
-  // rise's own balance takes the CoM the rest of the way.
-  if ((steady && (comToFeet < -kRiseMargin || (move_.name == "sit back" && comToFeet < kSitBackReach))) ||
+  // From a squat (sitting back, or the heels just down) the rise starts a
+  // little short of the soles: its own balance takes the CoM the rest of the
+  // way. (Heels down often ends with the CoM at the toe edges and the hands
+  // lifted: hand steps from there fell back in 10 of 19 failed prone starts.)
+  const bool squatting = move_.name == "sit back" || move_.name == "heels down";
+  if ((steady && (comToFeet < -kRiseMargin || (squatting && comToFeet < kSitBackReach))) ||
       crawlSteps_ >= kMaxCrawlSteps) {
     return PlanRise(r);
   }
