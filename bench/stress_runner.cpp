@@ -17,10 +17,11 @@
 // Standing is reported (stand rate, seeds that did not stand, outcomes histogram), not asserted.
 //
 //   stress_runner [--count N] [--first-seed S] [--jobs J] [--max-duration SECONDS] [--seeds a,b,c]
-//                 [--bounds assert|report]
+//                 [--bounds assert|report] [--runs FILE]
 // Exit 0 when every run is healthy, 1 when any run is not (listed with its seed and input); the
 // two physical bounds (body speed, box depth) count too unless `--bounds report`. 2 for bad
-// arguments. Runs are a pure function of their seed, so a failing seed reproduces with
+// arguments. --runs writes one JSON line per run (seed, stood, outcome, input) for analysis.
+// Runs are a pure function of their seed, so a failing seed reproduces with
 // `--seeds <seed>`.
 #include <algorithm>
 #include <atomic>
@@ -28,6 +29,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -57,6 +59,7 @@ struct Options {
   double maxDuration = 20.0;
   std::vector<uint64_t> seeds;  // explicit seeds replace count/firstSeed
   bool assertBounds = true;     // false: physical bounds broken are reported, not failed
+  std::string runsFile;         // JSON lines of every run; empty: none
 };
 
 struct RunResult {
@@ -222,6 +225,9 @@ bool ParseArgs(int argc, char** argv, Options& options) {
       if (value != "assert" && value != "report") return false;
       options.assertBounds = value == "assert";
       end = const_cast<char*>(value.c_str() + value.size());
+    } else if (arg == "--runs") {
+      options.runsFile = value;
+      end = const_cast<char*>(value.c_str() + value.size());
     } else if (arg == "--seeds") {
       std::stringstream list(value);
       std::string item;
@@ -242,7 +248,7 @@ int main(int argc, char** argv) {
   if (!ParseArgs(argc, argv, options)) {
     std::fprintf(stderr,
                  "usage: stress_runner [--count N] [--first-seed S] [--jobs J] [--max-duration 1..120] "
-                 "[--seeds a,b,c] [--bounds assert|report]\n");
+                 "[--seeds a,b,c] [--bounds assert|report] [--runs FILE]\n");
     return 2;
   }
   std::vector<uint64_t> seeds = options.seeds;
@@ -287,6 +293,14 @@ int main(int argc, char** argv) {
     slowest = std::max(slowest, run.wallSeconds);
     fastestSpeed = std::max(fastestSpeed, run.maxBodySpeed);
     deepest = std::max(deepest, run.maxPenetration);
+  }
+  if (!options.runsFile.empty()) {
+    std::ofstream runs(options.runsFile);
+    for (const RunResult& run : results) {
+      runs << nlohmann::json{{"seed", run.seed}, {"stood", run.stood}, {"time_to_stand", run.timeToStand},
+                             {"outcome", run.outcome}, {"input", nlohmann::json::parse(run.input)}}.dump()
+           << '\n';
+    }
   }
   const size_t n = results.size();
   std::printf(
