@@ -418,11 +418,15 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
     const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
     Residuals r{};
     // The CoM's height matters less than where it is over the ground: a lower
-    // or higher trunk is how far-placed hands and feet are reached.
+    // or higher trunk is how far-placed hands and feet are reached. Height and
+    // "over" are along gravity, never the ground's normal: on a 10 deg slope a
+    // CoM 0.9 m up that is over the feet along the normal is 16 cm off them,
+    // and the rise fell downhill (this and the CoM goals, which also stand on
+    // kUp, stood 2 of 98 random starts on 5-10 deg slopes; now 21).
     const glm::vec3 com = PoseCom(pose) - comGoal;
-    const float up = glm::dot(com, ground_.normal);
-    const glm::vec3 along = com - ground_.normal * up;
-    for (int k = 0; k < 3; ++k) r[k] = kComWeight * (along[k] + kComHeightShare * up * ground_.normal[k]);
+    const float up = glm::dot(com, kUp);
+    const glm::vec3 along = com - kUp * up;
+    for (int k = 0; k < 3; ++k) r[k] = kComWeight * (along[k] + kComHeightShare * up * kUp[k]);
     for (int i = 0; i < kLimbCount; ++i) {
       if (probe.limbs[i].mode == LimbMode::kBody) continue;
       const glm::vec3 miss = pose.worldPositions[rig_.end[i]] - goal.limbs[i].target;
@@ -507,7 +511,7 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
   // reach terms from a flat trunk, so a piked start is tried as well.
   auto best = descend({move.from.pelvis.x, move.from.pelvis.y, move.from.pelvis.z, startPitch, heel, startCurl});
   if (OnHandsAndFeet(move.phase)) {
-    const glm::vec3 hips = Horizontal(comGoal) - heading_ * 0.2f + ground_.normal * (0.85f * legReach_);
+    const glm::vec3 hips = Horizontal(comGoal) - heading_ * 0.2f + kUp * (0.85f * legReach_);
     const auto piked = descend({hips.x, hips.y, hips.z, -0.3f, heel, 0.6f});
     if (piked.second < best.second) best = piked;
   }
@@ -629,7 +633,7 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
     // CoM's horizontal error (and its integral, crawlOffset_), which the
     // planted limbs turn into a shift of the whole body.
     glm::vec3 error = PoseCom(goal) - reading.com;
-    error -= ground_.normal * glm::dot(error, ground_.normal);
+    error.y = 0.0f;
     // Only as far as every hand and foot can still reach its place: past that
     // the servos would be asked for a pose whose feet are off their spots.
     const glm::vec3 planned = goal.pelvisPosition;
@@ -649,10 +653,11 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
     // inverted pendulum) so a body drifting forward is leaned back before its
     // CoM leaves the feet, plus the integral correction for the servos' sag.
     // The correction is bounded by what the feet can hold, the slide by what
-    // the ankles allow with the feet flat where they are.
+    // the ankles allow with the feet flat where they are. (Horizontal: balance
+    // is along gravity, on a slope too; see PlanTrunk.)
     const glm::vec3 target = BalancePoint(reading);
     glm::vec3 capture = CapturePoint(reading) - target;
-    capture -= ground_.normal * glm::dot(capture, ground_.normal);
+    capture.y = 0.0f;
     glm::vec3 correction = balanceOffset_ - kCaptureGain * capture;
     const float footLength = 2.0f * def_.skeleton.joints[rig_.end[2]].box.halfExtents.z;
     const float maxCorrection = 0.4f * footLength;
@@ -663,7 +668,7 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
     glm::vec3 slide(0.0f);
     for (int iteration = 0; iteration < 3; ++iteration) {
       glm::vec3 error = centre - PoseCom(goal);
-      error -= ground_.normal * glm::dot(error, ground_.normal);
+      error.y = 0.0f;
       slide += error;
       if (glm::length(slide) > kMaxBalanceSlide) slide *= kMaxBalanceSlide / glm::length(slide);
       for (int halving = 0; halving < 5; ++halving, slide *= 0.5f) {
@@ -1048,7 +1053,7 @@ RiseController::Move RiseController::PlanPush(const BodyReading& r) {
   // way from the hands to the feet, the trunk pitched so the arms stay nearly
   // straight (the "bear" stance the crawl starts from).
   const glm::vec3 wrists = 0.5f * (move.limbs[0].to + move.limbs[1].to);
-  const glm::vec3 comGoal = Project(ground_, glm::mix(wrists, ankles, 0.35f)) + ground_.normal * crawlComHeight_;
+  const glm::vec3 comGoal = Project(ground_, glm::mix(wrists, ankles, 0.35f)) + kUp * crawlComHeight_;
   PlanTrunk(move, comGoal, {true, true});
   crawlSteps_ = 0;
   shiftTries_ = 0;
@@ -1145,7 +1150,7 @@ glm::vec3 RiseController::FootLiftCom(const BodyReading& r, Limb foot) const {
   const glm::vec2 forward = glm::normalize(Ground(heading_));
   const float handLine = std::min(glm::dot(hl, forward), glm::dot(hr, forward));
   deep -= forward * std::max(0.0f, glm::dot(deep, forward) - (handLine - kFootLiftHandLineMargin));
-  return Project(ground_, glm::vec3(deep.x, 0.0f, deep.y)) + ground_.normal * CrawlComHeight(r);
+  return Project(ground_, glm::vec3(deep.x, 0.0f, deep.y)) + kUp * CrawlComHeight(r);
 }
 
 std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading& r, Limb lifted) const {
@@ -1158,7 +1163,7 @@ std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading&
     glm::vec2 goal = stance.Closest(from);
     const glm::vec2 centre = stance.Centroid();
     for (int k = 0; k < 30 && stance.SignedDistance(goal) > -kShiftMargin; ++k) goal += 0.1f * (centre - goal);
-    return Project(ground_, glm::vec3(goal.x, 0.0f, goal.y)) + ground_.normal * CrawlComHeight(r);
+    return Project(ground_, glm::vec3(goal.x, 0.0f, goal.y)) + kUp * CrawlComHeight(r);
   };
   std::vector<glm::vec3> goals;
   if (IsArm(lifted)) {
@@ -1231,7 +1236,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       // back to the heel.
       Move move = OnAllFours(r, "heels down", 1.2);
       for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
-      PlanTrunk(move, Project(ground_, toes) + ground_.normal * (kSquatComRatio * standComHeight_), {true, true});
+      PlanTrunk(move, Project(ground_, toes) + kUp * (kSquatComRatio * standComHeight_), {true, true});
       ++crawlSteps_;
       return move;
     }
@@ -1239,7 +1244,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     // touching; the rise lets go of them once it is there.
     Move move = OnAllFours(r, "sit back", 1.2);
     for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
-    PlanTrunk(move, Project(ground_, toes - heading_ * kSitBackBehindSoles) + ground_.normal * (kSquatComRatio * standComHeight_),
+    PlanTrunk(move, Project(ground_, toes - heading_ * kSitBackBehindSoles) + kUp * (kSquatComRatio * standComHeight_),
               {true, true});
     ++crawlSteps_;
     return move;
@@ -1273,7 +1278,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     std::vector<glm::vec2> points;
     for (int i = 0; i < kLimbCount; ++i) points.push_back(Ground(ContactPoint(r, static_cast<Limb>(i))));
     const glm::vec2 centre = SupportPolygon::FromPoints(points).Centroid();
-    PlanTrunk(move, Project(ground_, glm::vec3(centre.x, 0.0f, centre.y)) + ground_.normal * CrawlComHeight(r), {true, true}, true);
+    PlanTrunk(move, Project(ground_, glm::vec3(centre.x, 0.0f, centre.y)) + kUp * CrawlComHeight(r), {true, true}, true);
     return move;
   }
   // The step: the limb lifts and swings to its new place on a Bezier path
@@ -1409,7 +1414,7 @@ RiseController::Move RiseController::PlanRise(const BodyReading& r) {
   for (int leg = 2; leg < 4; ++leg) move.legPitches[leg - 2] = LegPitches(r, leg);
   move.from = MeasuredTrunk(r);
   move.to.pelvisRotation = move.to.chestRotation = TrunkRotation(heading_, 0.5f * kPi);
-  move.to.pelvis = FeetCentre(r) + ground_.normal * standPelvisHeight_ * 0.985f;
+  move.to.pelvis = FeetCentre(r) + kUp * standPelvisHeight_ * 0.985f;
   for (int i = 0; i < 2; ++i) {
     LimbMove& m = move.limbs[i];
     const Limb hand = static_cast<Limb>(i);
@@ -1497,7 +1502,7 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
   glm::vec3 pressure = r.com, balanceForce(0.0f);
   if (phase_ == RisePhase::kRise || phase_ == RisePhase::kStand) {
     glm::vec3 accel = kBalanceStiffness * (BalancePoint(r) - r.com) - kBalanceDamping * r.comVelocity;
-    accel -= ground_.normal * glm::dot(accel, ground_.normal);
+    accel.y = 0.0f;
     const glm::vec2 wanted = Ground(r.com - accel * (Height(ground_, r.com) / 9.81f));
     const SupportPolygon feet = FeetRegion(r);
     const glm::vec2 cop = feet.SignedDistance(wanted) < 0.0f ? wanted : feet.Closest(wanted);
@@ -1616,7 +1621,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     else if (stalledSince_ < 0.0) stalledSince_ = reading.time;
     if (OnHandsAndFeet(move_.phase)) {
       glm::vec3 error = PoseCom(GoalAt(move_, progress_, reading, false)) - reading.com;
-      error -= ground_.normal * glm::dot(error, ground_.normal);
+      error.y = 0.0f;
       crawlOffset_ += error * static_cast<float>(dt) * kCrawlComIntegral;
       if (glm::length(crawlOffset_) > kMaxCrawlOffset) crawlOffset_ *= kMaxCrawlOffset / glm::length(crawlOffset_);
     }
@@ -1627,7 +1632,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
       // Integral feedback on the measured CoM keeps the balance goal honest
       // when the model's masses or the servos' sag differ from the plan.
       glm::vec3 error = BalancePoint(reading) - reading.com;
-      error -= ground_.normal * glm::dot(error, ground_.normal);
+      error.y = 0.0f;
       balanceOffset_ += error * static_cast<float>(dt) * 1.5f;
       const float limit = 0.05f;
       if (glm::length(balanceOffset_) > limit) balanceOffset_ *= limit / glm::length(balanceOffset_);
