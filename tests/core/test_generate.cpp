@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/clip_check.h"
 #include "core/clip_quality.h"
 #include "core/generate.h"
 #include "core/input_json.h"
@@ -288,6 +289,30 @@ constexpr std::array<const char*, 4> kRolledStandingStarts = {
 
 TEST_CASE("phases 0 to 2: lying on the back or a side, the body rolls prone, gets up on its hands and feet and stands") {
   CHECK(CountStanding(kRolledStandingStarts, true) >= 3);
+}
+
+TEST_CASE("on a slope facing uphill the body stands upright, balanced along gravity, with every quality bar") {
+  // Balance is over the feet along gravity, not the ground's normal: measured
+  // along the normal, the CoM of a body standing on a 10 deg slope sat 16 cm
+  // downhill of its feet and every rise fell down the slope.
+  for (const char* text : {R"({"start":{"posture":"prone"},"terrain":{"slope_deg":8,"friction":0.9}})",
+                           R"({"start":{"posture":"prone"},"terrain":{"slope_deg":10,"friction":0.9}})"}) {
+    INFO(std::string(text));
+    const auto spec = rise::ParseRiseSpec(text, "start.json");
+    REQUIRE(spec.IsOk());
+    rise::GenerateSettings settings;
+    settings.keepTrace = true;
+    const rise::GeneratedClip result = rise::GenerateClip(spec.Value(), settings);
+    REQUIRE(result.stood);
+    const rise::QualityReport quality = rise::MeasureClip(result.clip, rise::QualityOptionsFor(result.clip));
+    INFO("lying " << quality.startsLying << " standing " << quality.endsStanding << " ground " << quality.penetrationOk
+                  << " slip " << quality.slipOk << " " << quality.maxSlip << " jump " << quality.jumpOk);
+    CHECK(quality.passed);
+    // At the end the CoM is straight above the soles (its vertical projection at
+    // least 3 cm inside them), not merely above them along the ground's normal.
+    REQUIRE_FALSE(result.trace.empty());
+    CHECK(result.trace.back().feetDistance < -0.03f);
+  }
 }
 
 TEST_CASE("phases 0 to 2: no hand or foot slides along the ground on the way up") {
