@@ -199,6 +199,9 @@ class Reader {
     if (!OptionalInteger(root, "", "seed", kMaxSeed, spec.seed)) return false;
     if (!OptionalNumber(root, "", "fps", {1, 240, "frames per second"}, spec.fps)) return false;
     if (!OptionalNumber(root, "", "max_duration_s", {1, 120, "s"}, spec.maxDurationS)) return false;
+    // Left out (here and in every patch before), it follows the start and style.
+    spec.maxDurationGiven = spec.maxDurationGiven || root.contains("max_duration_s");
+    if (!spec.maxDurationGiven) spec.maxDurationS = DefaultMaxDurationS(spec);
     if (root.contains("disturbances") && !Disturbances(root["disturbances"], "disturbances", spec)) return false;
     if (root.contains("output") && !Output(root["output"], "output", spec.output)) return false;
     return true;

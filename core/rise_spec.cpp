@@ -2,6 +2,8 @@
 // Small helpers of RiseSpec that do not involve JSON.
 #include "core/rise_spec.h"
 
+#include <algorithm>
+
 namespace rise {
 
 const char* PostureName(Posture posture) {
@@ -18,6 +20,15 @@ const char* PostureName(Posture posture) {
       return "custom";
   }
   return "supine";
+}
+
+double DefaultMaxDurationS(const RiseSpec& spec) {
+  // A prone start stands in about 10-16 s; a roll first adds 5-10 s (rolled
+  // starts stood at 16-27 s, so most failed a 20 s limit); a slow style
+  // stretches every move by 1 / pace.
+  const double base = spec.start.posture == Posture::kProne ? 20.0 : 30.0;
+  const double pace = std::max(0.25, spec.style.speed) * (1.0 - 0.4 * spec.style.tiredness);
+  return std::min(120.0, base / std::min(1.0, pace));
 }
 
 BipedDef MakeBipedDef(const CharacterSpec& character) {

@@ -85,9 +85,15 @@ struct RiseSpec {
   std::vector<Disturbance> disturbances;
   uint64_t seed = 1;           // [0, 2^53]
   double fps = 30.0;           // [1, 240]
-  double maxDurationS = 20.0;  // [1, 120]
+  double maxDurationS = 30.0;  // [1, 120]; when the input leaves it out, DefaultMaxDurationS (supine: 30)
+  bool maxDurationGiven = false;  // set by the input (or an override), not DefaultMaxDurationS
   OutputSpec output;
 };
+
+// max_duration_s when the input leaves it out: 20 s lying prone, 30 s from any
+// other start (the roll), divided by the style's pace (speed x (1 - 0.4
+// tiredness)) when that is below 1; at most 120 s.
+double DefaultMaxDurationS(const RiseSpec& spec);
 
 // The body the spec describes.
 BipedDef MakeBipedDef(const CharacterSpec& character);
