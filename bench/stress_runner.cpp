@@ -16,7 +16,7 @@
 //   - no box vertex goes deeper than kMaxPenetration below the ground (the slope plane).
 // Standing is reported (stand rate, seeds that did not stand, outcomes histogram), not asserted.
 //
-//   stress_runner [--count N] [--first-seed S] [--jobs J] [--max-duration SECONDS] [--seeds a,b,c]
+//   stress_runner [--count N] [--first-seed S] [--jobs J] [--max-duration SECONDS (default: left out)] [--seeds a,b,c]
 //                 [--bounds assert|report] [--runs FILE]
 // Exit 0 when every run is healthy, 1 when any run is not (listed with its seed and input); the
 // two physical bounds (body speed, box depth) count too unless `--bounds report`. 2 for bad
@@ -56,7 +56,7 @@ struct Options {
   int count = 100;
   uint64_t firstSeed = 1;
   int jobs = 0;
-  double maxDuration = 20.0;
+  double maxDuration = 0.0;  // s; 0 leaves max_duration_s out of the inputs (its default applies)
   std::vector<uint64_t> seeds;  // explicit seeds replace count/firstSeed
   bool assertBounds = true;     // false: physical bounds broken are reported, not failed
   std::string runsFile;         // JSON lines of every run; empty: none
@@ -114,7 +114,7 @@ nlohmann::ordered_json RandomInput(uint64_t seed, double maxDuration) {
       {"look_around", Round3(Uniform(rng, 0.0, 1.0))}};
   input["seed"] = seed;
   input["fps"] = kRecordFps;
-  input["max_duration_s"] = maxDuration;
+  if (maxDuration > 0.0) input["max_duration_s"] = maxDuration;
   return input;
 }
 
@@ -191,8 +191,8 @@ RunResult Run(uint64_t seed, double maxDuration) {
   if (generated.health.ok && (run.stood ? run.timeToStand < 0.0 : !didNotStand)) {
     run.violations.push_back("no clear result: outcome \"" + run.outcome + "\"");
   }
-  if (run.simulated > maxDuration + 1.0 / kRecordFps) {
-    run.violations.push_back(Format("simulated %.3f s, past max_duration_s %.1f", run.simulated, maxDuration));
+  if (run.simulated > spec.Value().maxDurationS + 1.0 / kRecordFps) {
+    run.violations.push_back(Format("simulated %.3f s, past max_duration_s %.1f", run.simulated, spec.Value().maxDurationS));
   }
   run.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
@@ -238,7 +238,7 @@ bool ParseArgs(int argc, char** argv, Options& options) {
     }
     if (end == nullptr || *end != '\0') return false;
   }
-  return options.count > 0 && options.jobs >= 0 && options.maxDuration >= 1.0 && options.maxDuration <= 120.0;
+  return options.count > 0 && options.jobs >= 0 && (options.maxDuration == 0.0 || (options.maxDuration >= 1.0 && options.maxDuration <= 120.0));
 }
 
 }  // namespace
@@ -303,9 +303,9 @@ int main(int argc, char** argv) {
     }
   }
   const size_t n = results.size();
-  std::printf(
-      "stress: %zu random starts (seeds %llu..), max_duration_s %.0f, %d threads, %.1f s wall (slowest run %.1f s)\n",
-      n, static_cast<unsigned long long>(seeds.front()), options.maxDuration, jobs, wall, slowest);
+  const std::string limit = options.maxDuration > 0.0 ? Format("%.0f s", options.maxDuration) : "its default";
+  std::printf("stress: %zu random starts (seeds %llu..), max_duration_s %s, %d threads, %.1f s wall (slowest run %.1f s)\n",
+              n, static_cast<unsigned long long>(seeds.front()), limit.c_str(), jobs, wall, slowest);
   std::printf("stand rate: %d / %zu (%.1f %%)\n", stood, n, 100.0 * stood / static_cast<double>(n));
   std::printf("outcomes:\n");
   for (const auto& [kind, list] : kinds) {
