@@ -398,7 +398,10 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
   };
   const float startPitch = pitchOf(move.from.pelvisRotation);
   const float startCurl = std::clamp(startPitch - pitchOf(move.from.chestRotation), kMinCurl, kMaxCurl);
-  constexpr int kUnknowns = 6, kResiduals = 3 + 3 * kLimbCount + 3 * 2 + 2 + 2 + 2;
+  // Residuals: CoM (3), each limb's reach (3 each), the planted feet's tilt (3 each),
+  // the bearing arms' length (1 each), the knees' clearance (1 each), pitch, curl.
+  constexpr int kFeetTilt = 3 + 3 * kLimbCount, kArmLength = kFeetTilt + 3 * 2, kKnees = kArmLength + 2;
+  constexpr int kUnknowns = 6, kResiduals = kKnees + 2 + 2;
   using Unknowns = std::array<float, kUnknowns>;
   using Residuals = std::array<float, kResiduals>;
   std::vector<int> heels;
@@ -441,18 +444,18 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
       if (!probe.limbs[i].planted || move.name != "sit back") continue;
       const float halfLength = def_.skeleton.joints[rig_.end[i]].box.halfExtents.z;
       const glm::vec3 tilt = pose.worldRotations[rig_.end[i]] * kUp - goal.limbs[i].endRotation * kUp;
-      for (int k = 0; k < 3; ++k) r[3 + 3 * kLimbCount + 3 * (i - 2) + k] = kReachWeight * halfLength * tilt[k];
+      for (int k = 0; k < 3; ++k) r[kFeetTilt + 3 * (i - 2) + k] = kReachWeight * halfLength * tilt[k];
     }
     for (int i = 0; i < 2; ++i) {
       if (!bearingHands[i]) continue;
       const float reach = glm::length(LimbRoot(def_.skeleton, rig_, goal, static_cast<Limb>(i)) - goal.limbs[i].target);
-      r[3 + 3 * kLimbCount + 6 + i] = kStraightArmWeight * (reach - kSupportArmReach * armReach_);
+      r[kArmLength + i] = kStraightArmWeight * (reach - kSupportArmReach * armReach_);
     }
     // Knees stay off the ground: kneeling, the body would rest on joints the
     // plan does not count as supports.
     for (int leg = 2; leg < 4; ++leg) {
       const float height = Height(ground_, pose.worldPositions[rig_.lower[leg]]);
-      r[3 + 3 * kLimbCount + 6 + 2 + (leg - 2)] = kReachWeight * std::max(0.0f, kKneeClearance - height);
+      r[kKnees + (leg - 2)] = kReachWeight * std::max(0.0f, kKneeClearance - height);
     }
     r[kResiduals - 2] = kPitchWeight * (x[3] - startPitch);
     r[kResiduals - 1] = kCurlWeight * x[5];
@@ -1230,7 +1233,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   // again. Hand steps from there fell back in 10 of 19 failed prone starts;
   // holding, bench/prone_variants 72 (prone 20 s, rolled 30 s) stood 162 -> 210
   // of 288, and prone clips passing every bar went 15 -> 21 of 40.
-  if (squatting && comToFeet < kSitBackReach) {
+  if (squatting && !steady && comToFeet < kSitBackReach) {
     Move move = OnAllFours(r, "steady", kSteadyHold);
     move.to = move.from;
     ++crawlSteps_;
