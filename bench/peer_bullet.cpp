@@ -89,6 +89,17 @@ class BulletRagdoll final : public RagdollEngine {
           constraint = std::move(universal);
           break;
         }
+        case physics::JointType::kGimbal: {
+          // RO_YZX composes R = Ry Rz Rx, as our gimbal; Bullet's angular limits are per axis x, y, z.
+          localFrames(frame, inA, inB);
+          auto gimbal = std::make_unique<btGeneric6DofSpring2Constraint>(a, b, inA, inB, RO_YZX);
+          gimbal->setLinearLowerLimit(btVector3(0.0f, 0.0f, 0.0f));
+          gimbal->setLinearUpperLimit(btVector3(0.0f, 0.0f, 0.0f));
+          gimbal->setAngularLowerLimit(btVector3(joint.twistLimits.lower, joint.swingYLimits.lower, joint.swingZLimits.lower));
+          gimbal->setAngularUpperLimit(btVector3(joint.twistLimits.upper, joint.swingYLimits.upper, joint.swingZLimits.upper));
+          constraint = std::move(gimbal);
+          break;
+        }
       }
       world_.addConstraint(constraint.get(), true);
       constraints_.push_back(std::move(constraint));

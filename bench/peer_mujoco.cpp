@@ -74,6 +74,15 @@ void AppendBody(const scenes::RagdollScene& scene, int index, std::string& xml) 
         xml += "<joint type='hinge'" + pos + " axis='" + Vec(joint.frame * glm::vec3(0, 0, 1)) +
                "' limited='true' range='" + Range(joint.swingZLimits) + "'/>";
         break;
+      case physics::JointType::kGimbal:
+        // Three hinges in a body compose in order: Ry(alpha) Rz(beta) Rx(gamma), as ours.
+        xml += "<joint type='hinge'" + pos + " axis='" + Vec(joint.frame * glm::vec3(0, 1, 0)) +
+               "' limited='true' range='" + Range(joint.swingYLimits) + "'/>";
+        xml += "<joint type='hinge'" + pos + " axis='" + Vec(joint.frame * glm::vec3(0, 0, 1)) +
+               "' limited='true' range='" + Range(joint.swingZLimits) + "'/>";
+        xml += "<joint type='hinge'" + pos + " axis='" + Vec(joint.frame * glm::vec3(1, 0, 0)) +
+               "' limited='true' range='" + Range(joint.twistLimits) + "'/>";
+        break;
     }
   }
   xml += "<geom type='box' size='" + Vec(box.halfExtents) + "' mass='" + Number(box.mass) + "'/>";

@@ -52,7 +52,8 @@ class OdeRagdoll final : public RagdollEngine {
       const glm::vec3 p = startA.position + scene.startRotation * (joint.anchor - scene.boxes[joint.parent].center);
       const glm::vec3 x = frame * glm::vec3(1, 0, 0), y = frame * glm::vec3(0, 1, 0), z = frame * glm::vec3(0, 0, 1);
       switch (joint.type) {
-        case physics::JointType::kBall: {
+        case physics::JointType::kBall:
+        case physics::JointType::kGimbal: {
           dJointID ball = dJointCreateBall(world_, nullptr);
           dJointAttach(ball, a, b);
           dJointSetBallAnchor(ball, p.x, p.y, p.z);
@@ -62,10 +63,16 @@ class OdeRagdoll final : public RagdollEngine {
           dJointSetAMotorMode(motor, dAMotorEuler);
           dJointSetAMotorAxis(motor, 0, 1, y.x, y.y, y.z);
           dJointSetAMotorAxis(motor, 2, 2, x.x, x.y, x.z);
-          dJointSetAMotorParam(motor, dParamLoStop, -joint.swingCone);
-          dJointSetAMotorParam(motor, dParamHiStop, joint.swingCone);
-          dJointSetAMotorParam(motor, dParamLoStop2, -joint.swingCone);
-          dJointSetAMotorParam(motor, dParamHiStop2, joint.swingCone);
+          // A ball's cone becomes a box of swings; a gimbal's ranges are the Euler motor's own
+          // (ODE's middle axis is axis 2 x axis 0, our z).
+          const bool gimbal = joint.type == physics::JointType::kGimbal;
+          const physics::AngleRange cone{-joint.swingCone, joint.swingCone};
+          const physics::AngleRange first = gimbal ? joint.swingYLimits : cone;
+          const physics::AngleRange second = gimbal ? joint.swingZLimits : cone;
+          dJointSetAMotorParam(motor, dParamLoStop, first.lower);
+          dJointSetAMotorParam(motor, dParamHiStop, first.upper);
+          dJointSetAMotorParam(motor, dParamLoStop2, second.lower);
+          dJointSetAMotorParam(motor, dParamHiStop2, second.upper);
           dJointSetAMotorParam(motor, dParamLoStop3, joint.twistLimits.lower);
           dJointSetAMotorParam(motor, dParamHiStop3, joint.twistLimits.upper);
           break;

@@ -110,8 +110,7 @@ nlohmann::ordered_json RandomInput(uint64_t seed, double maxDuration) {
   input["style"] = {
       {"speed", Round3(Uniform(rng, 0.25, 3.0))},         {"step_height_m", Round3(Uniform(rng, 0.02, 0.3))},
       {"stance_width_m", Round3(Uniform(rng, 0.1, 0.6))}, {"sway", Round3(Uniform(rng, 0.0, 1.0))},
-      {"swivel_deg", Round3(Uniform(rng, -45.0, 45.0))},  {"tiredness", Round3(Uniform(rng, 0.0, 1.0))},
-      {"look_around", Round3(Uniform(rng, 0.0, 1.0))}};
+      {"tiredness", Round3(Uniform(rng, 0.0, 1.0))},       {"look_around", Round3(Uniform(rng, 0.0, 1.0))}};
   input["seed"] = seed;
   input["fps"] = kRecordFps;
   if (maxDuration > 0.0) input["max_duration_s"] = maxDuration;

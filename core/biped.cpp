@@ -36,7 +36,7 @@ physics::JointType EngineType(JointKind kind) {
     case JointKind::kUniversal:
       return physics::JointType::kUniversal;
     default:
-      return physics::JointType::kBall;
+      return physics::JointType::kGimbal;
   }
 }
 
@@ -237,11 +237,13 @@ Biped::Biped(const BipedDef& def, physics::World& world, const BipedPose& pose, 
       joint.swingZLimits = RangeOf(bone.dofs[1]);
     }
     if (bone.kind == JointKind::kBall) {
+      // The gimbal's angles are about the frame's y, z and x axes (JointFrame), which are the
+      // DOF axes except that z may be the second axis reversed.
+      joint.swingYLimits = RangeOf(bone.dofs[0]);
+      const physics::AngleRange second = RangeOf(bone.dofs[1]);
+      const bool reversed = glm::dot(frames_[j] * glm::vec3(0, 0, 1), bone.dofs[1].axis) < 0.0f;
+      joint.swingZLimits = reversed ? physics::AngleRange{-second.upper, -second.lower} : second;
       joint.twistLimits = RangeOf(bone.dofs[2]);
-      float cone = 0.0f;
-      for (int k = 0; k < 2; ++k)
-        cone = std::max({cone, std::fabs(bone.dofs[k].minDeg), std::fabs(bone.dofs[k].maxDeg)});
-      joint.swingCone = Radians(cone);
     }
     joint.motor.enabled = false;
     joint.motor.stiffness = bone.servoKp;

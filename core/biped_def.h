@@ -65,7 +65,7 @@ enum class JointKind {
   kFree,       // the root: 6 DOF, no joint to a parent
   kHinge,      // 1 DOF
   kUniversal,  // 2 DOF (swing without twist)
-  kBall,       // 3 DOF with a limit per axis
+  kBall,       // 3 DOF with a limit per axis (the engine's gimbal joint)
   kEnd,        // end marker: no body, no DOF
 };
 

@@ -316,14 +316,13 @@ class Reader {
 
   bool Style(const Json& value, const std::string& path, StyleSpec& out) {
     if (!Object(value, path,
-                {"speed", "step_height_m", "stance_width_m", "sway", "swivel_deg", "tiredness", "look_around"})) {
+                {"speed", "step_height_m", "stance_width_m", "sway", "tiredness", "look_around"})) {
       return false;
     }
     return OptionalNumber(value, path, "speed", {0.25, 3, "times the default pace"}, out.speed) &&
            OptionalNumber(value, path, "step_height_m", {0.02, 0.3, "m"}, out.stepHeightM) &&
            OptionalNumber(value, path, "stance_width_m", {0.1, 0.6, "m"}, out.stanceWidthM) &&
            OptionalNumber(value, path, "sway", {0, 1, ""}, out.sway) &&
-           OptionalNumber(value, path, "swivel_deg", {-45, 45, "degrees"}, out.swivelDeg) &&
            OptionalNumber(value, path, "tiredness", {0, 1, ""}, out.tiredness) &&
            OptionalNumber(value, path, "look_around", {0, 1, ""}, out.lookAround);
   }
@@ -478,7 +477,6 @@ nlohmann::ordered_json RiseSpecToJson(const RiseSpec& spec) {
         {"step_height_m", spec.style.stepHeightM},
         {"stance_width_m", spec.style.stanceWidthM},
         {"sway", spec.style.sway},
-        {"swivel_deg", spec.style.swivelDeg},
         {"tiredness", spec.style.tiredness},
         {"look_around", spec.style.lookAround}}},
       {"disturbances", disturbances},

@@ -58,7 +58,6 @@ struct StyleSpec {
   double stepHeightM = 0.08;  // [0.02, 0.3], how high a hand or foot lifts when it moves
   double stanceWidthM = 0.3;  // [0.1, 0.6], distance between the feet when standing
   double sway = 0.0;          // [0, 1], secondary swaying motion (priority layer)
-  double swivelDeg = 0.0;     // [-45, 45], knee/elbow bend-plane rotation (bow-legged > 0)
   double tiredness = 0.0;     // [0, 1], slower, heavier movement
   double lookAround = 0.0;    // [0, 1], head turns during the rise (priority layer)
 };

@@ -34,6 +34,9 @@ void UpdateRows(const Joint& joint, const glm::quat& frameA, const glm::quat& fr
     case JointType::kUniversal:
       UniversalRows(joint, frameA, frameB, rows);
       return;
+    case JointType::kGimbal:
+      GimbalRows(joint, frameA, frameB, rows);
+      return;
   }
   RISE_ASSERT_MSG(false, "unknown joint type");
 }

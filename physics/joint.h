@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Joints between two bodies: ball-socket, hinge and 2-DOF universal, each with limits and a PD motor.
+// Joints between two bodies: ball-socket, hinge, 2-DOF universal and 3-DOF gimbal, each with
+// limits and a PD motor.
 //
 // Joint frame: every joint is given one world-space frame (anchor point + orientation) at the
 // bind pose. Its x axis is the twist axis (ball, universal: usually along the child bone) or the
@@ -13,10 +14,12 @@
 //   kHinge:     1 rotation about x (A's x and B's x stay aligned); the angle in twistLimits.
 //   kUniversal: 2 rotations, twist about x locked (Cardan joint): first about A's y by angle
 //               alpha (in swingYLimits), then about B's z by angle beta (in swingZLimits),
-//               qRel = Ry(alpha) Rz(beta). Used for hips and shoulders.
+//               qRel = Ry(alpha) Rz(beta). Used for hips, shoulders, wrists and ankles.
+//   kGimbal:    3 rotations, qRel = Ry(alpha) Rz(beta) Rx(gamma), each angle in its own range
+//               (swingYLimits, swingZLimits, twistLimits). Used for the spine and neck.
 //
 // Motor: a PD servo that drives qRel to motor.target (identity = bind pose), acting only on the
-// joint's free axes (all three for kBall, x for kHinge, A's y and B's z for kUniversal).
+// joint's free axes (all three for kBall and kGimbal, x for kHinge, A's y and B's z for kUniversal).
 #pragma once
 
 #include "physics/body.h"
@@ -31,7 +34,7 @@
 
 namespace rise::physics {
 
-enum class JointType : uint8_t { kBall, kHinge, kUniversal };
+enum class JointType : uint8_t { kBall, kHinge, kUniversal, kGimbal };
 
 struct AngleRange {
   float lower = 0.0f;  // rad
@@ -60,10 +63,10 @@ struct JointDef {
   glm::quat frame{1.0f, 0.0f, 0.0f, 0.0f};   // world orientation of the joint frame at the bind pose
 
   bool enableLimits = false;
-  AngleRange twistLimits{-3.14159265f, 3.14159265f};  // kBall twist, kHinge angle
+  AngleRange twistLimits{-3.14159265f, 3.14159265f};  // kBall twist, kHinge angle, kGimbal gamma
   float swingCone = 3.14159265f;                      // kBall cone half-angle
-  AngleRange swingYLimits{-1.5f, 1.5f};               // kUniversal alpha
-  AngleRange swingZLimits{-1.5f, 1.5f};               // kUniversal beta
+  AngleRange swingYLimits{-1.5f, 1.5f};               // kUniversal and kGimbal alpha
+  AngleRange swingZLimits{-1.5f, 1.5f};               // kUniversal and kGimbal beta
 
   MotorDef motor;
 };
@@ -150,12 +153,13 @@ void SolveJoints(std::vector<Joint>& joints, std::vector<Body>& bodies, Body& st
 // pass are read, so the solver calls it there.
 void StoreJointWarmStarts(std::vector<Joint>& joints, const SolverContext& context);
 
-// Per-type geometry (joint_ball.cpp, joint_hinge.cpp, joint_universal.cpp), written into `rows`
+// Per-type geometry (joint_ball.cpp, joint_hinge.cpp, joint_universal.cpp, joint_gimbal.cpp), written into `rows`
 // in place: counts, axes, positions, angles and ranges (the effective masses are the caller's).
 // frameA = qA localFrameA and frameB = qB localFrameB, the joint frames in world space; the caller
 // computes them once for the rows and the motor.
 void BallRows(const Joint& joint, const glm::quat& frameA, const glm::quat& frameB, AngularRows& rows);
 void HingeRows(const Joint& joint, const glm::quat& frameA, const glm::quat& frameB, AngularRows& rows);
 void UniversalRows(const Joint& joint, const glm::quat& frameA, const glm::quat& frameB, AngularRows& rows);
+void GimbalRows(const Joint& joint, const glm::quat& frameA, const glm::quat& frameB, AngularRows& rows);
 
 }  // namespace rise::physics

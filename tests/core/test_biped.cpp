@@ -179,11 +179,10 @@ TEST_SUITE("biped") {
       CHECK(biped.MaxBodySpeed() < 0.05f);
       // At rest the body lies on the ground: its lowest corner is within a centimetre of it.
       CHECK(std::fabs(biped.LowestCorner(ground)) < 0.01f);
-      // Hinge and universal joints stay inside their limits (plus the solver's softness, 2 deg);
-      // knees and elbows thus still bend one way only.
+      // Every joint stays inside its limits (plus the solver's softness, 2 deg); knees and elbows
+      // thus still bend one way only.
       for (int j = 0; j < def.skeleton.JointCount(); ++j) {
-        const rise::JointKind kind = def.bones[j].kind;
-        if (kind != rise::JointKind::kHinge && kind != rise::JointKind::kUniversal) continue;
+        if (def.DofCount(j) == 0) continue;
         float angles[3] = {};
         def.JointAngles(j, biped.LocalRotation(j), angles);
         for (int k = 0; k < def.DofCount(j); ++k) {

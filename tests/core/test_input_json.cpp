@@ -77,8 +77,8 @@ TEST_SUITE("input_json") {
     "start": {"posture": "custom", "heading_deg": -30, "root_euler_deg": [-90, 10, 5],
               "joints_deg": {"shin_r": [45], "thigh_l": [30, -10], "chest": [10, 5, -20]}, "drop_height_m": 0.4},
     "terrain": {"slope_deg": 10, "friction": 0.6},
-    "style": {"speed": 1.5, "step_height_m": 0.1, "stance_width_m": 0.25, "sway": 0.5, "swivel_deg": 10,
-              "tiredness": 0.2, "look_around": 0.7},
+    "style": {"speed": 1.5, "step_height_m": 0.1, "stance_width_m": 0.25, "sway": 0.5, "tiredness": 0.2,
+              "look_around": 0.7},
     "disturbances": [{"time_s": 3, "body": "chest", "force_n": [150, 0, -20], "duration_s": 0.2}],
     "seed": 42, "fps": 60, "max_duration_s": 15,
     "output": {"names": "mixamo", "root_motion": false}})");
@@ -97,7 +97,6 @@ TEST_SUITE("input_json") {
     CHECK(spec.terrain.slopeDeg == 10.0);
     CHECK(spec.terrain.friction == 0.6);
     CHECK(spec.style.speed == 1.5);
-    CHECK(spec.style.swivelDeg == 10.0);
     CHECK(spec.style.lookAround == 0.7);
     REQUIRE(spec.disturbances.size() == 1u);
     CHECK(spec.disturbances[0].body == "chest");
@@ -239,8 +238,8 @@ TEST_SUITE("input_json") {
     "start": {"posture": "custom", "heading_deg": 12.25, "root_euler_deg": [-85, 3, 0.1],
               "joints_deg": {"foot_l": [-20, 5], "head": [1, 2, 3]}, "drop_height_m": 0.25},
     "terrain": {"slope_deg": 7.5, "friction": 1.1},
-    "style": {"speed": 0.9, "step_height_m": 0.12, "stance_width_m": 0.33, "sway": 0.4, "swivel_deg": -5,
-              "tiredness": 0.3, "look_around": 0.1},
+    "style": {"speed": 0.9, "step_height_m": 0.12, "stance_width_m": 0.33, "sway": 0.4, "tiredness": 0.3,
+              "look_around": 0.1},
     "disturbances": [{"time_s": 2.5, "body": "pelvis", "force_n": [0, 0, 150], "duration_s": 0.15}],
     "seed": 123456789, "fps": 24, "max_duration_s": 12.5, "output": {"names": "ue", "root_motion": false}})";
     const rise::RiseSpec spec = ParseOk(text);
@@ -259,7 +258,7 @@ TEST_SUITE("input_json") {
     // The default spec round-trips too and names every key of the format.
     const nlohmann::ordered_json defaults = rise::RiseSpecToJson(rise::RiseSpec{});
     CHECK(rise::RiseSpecToJson(ParseOk(defaults.dump())) == defaults);
-    CHECK(defaults["style"].size() == 7u);
+    CHECK(defaults["style"].size() == 6u);
   }
 
   TEST_CASE("every sample loads, and reference.json holds exactly the defaults") {

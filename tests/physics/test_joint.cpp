@@ -120,7 +120,8 @@ TEST_SUITE("physics.joint") {
     CHECK(maxAngle > 0.3f - kDegree);
   }
 
-  TEST_CASE_TEMPLATE("universal and ball limits hold within 1 deg under torques pushing past them", T, RISE_JOINT_SOLVERS) {
+  TEST_CASE_TEMPLATE("universal, gimbal and ball limits hold within 1 deg under torques pushing past them", T,
+                     RISE_JOINT_SOLVERS) {
     struct Case {
       JointType type;
       glm::vec3 torque;
@@ -128,6 +129,10 @@ TEST_SUITE("physics.joint") {
     // Rods along +x (the twist axis) from a world anchor; no gravity, only the pushing torque.
     const Case cases[] = {{JointType::kUniversal, {0.0f, 30.0f, 0.0f}},  // alpha, about A's y
                           {JointType::kUniversal, {0.0f, 0.0f, -30.0f}}, // beta, about B's z
+                          {JointType::kGimbal, {0.0f, 30.0f, 0.0f}},     // alpha, about A's y
+                          {JointType::kGimbal, {0.0f, 0.0f, -30.0f}},    // beta, the middle axis
+                          {JointType::kGimbal, {30.0f, 0.0f, 0.0f}},     // gamma, the twist about B's x
+                          {JointType::kGimbal, {30.0f, -30.0f, -30.0f}}, // all three at once
                           {JointType::kBall, {0.0f, 0.0f, 30.0f}},       // swing cone
                           {JointType::kBall, {30.0f, 0.0f, 0.0f}}};      // twist
     for (const Case& c : cases) {
@@ -156,6 +161,13 @@ TEST_SUITE("physics.joint") {
           const float beta = std::atan2(r[0].y, r[1].y);
           worst = std::max({worst, alpha - 0.5f, -0.4f - alpha, beta - 0.3f, -0.6f - beta});
           reached = std::max(std::fabs(alpha), std::fabs(beta));
+        } else if (c.type == JointType::kGimbal) {
+          // qRel = Ry(alpha) Rz(beta) Rx(gamma), read back as joint_gimbal.cpp defines the angles.
+          const float alpha = std::atan2(-r[0].z, r[0].x);
+          const float beta = std::asin(std::clamp(r[0].y, -1.0f, 1.0f));
+          const float gamma = std::atan2(-r[2].y, r[1].y);
+          worst = std::max({worst, alpha - 0.5f, -0.4f - alpha, beta - 0.3f, -0.6f - beta, gamma - 0.45f, -0.2f - gamma});
+          reached = std::max({std::fabs(alpha), std::fabs(beta), std::fabs(gamma)});
         } else {
           const float swing = std::acos(std::clamp(r[0].x, -1.0f, 1.0f));
           const glm::quat qq = q.w < 0.0f ? -q : q;
