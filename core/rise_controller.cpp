@@ -962,6 +962,7 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
   PoseGoal trunk;
   trunk.pelvisPosition = move.from.pelvis;
   trunk.pelvisRotation = trunk.chestRotation = move.to.chestRotation;
+  std::array<float, 2> travel{};  // how far each hand goes, world
   for (int i = 0; i < 2; ++i) {
     const Limb hand = static_cast<Limb>(i);
     // The wrist beside the chest, under the shoulder and a little toward the
@@ -983,6 +984,7 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
       pose = SolveBodyPose(def_.skeleton, rig_, reach);
       if (glm::length(pose.worldPositions[rig_.end[i]] - m.to) <= kReachTolerance) break;
     }
+    travel[i] = glm::length(m.to - r.jointPositions[rig_.end[i]]);
     if (move_.name == "arm out" && move_.limbs[i].mode == LimbMode::kJoint) {
       // An arm just brought out from overhead is bent elbow-up at the side,
       // where the solution for the wrist's path starts in another branch: the
@@ -997,7 +999,6 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
       m.toRotation = local[rig_.end[i]];
     }
     m.lift = HandSwingLift(hand);
-    m.delay = i == 0 ? 0.0f : 0.3f;
     m.span = 0.7f;
   }
   for (int i = 2; i < 4; ++i) {
@@ -1013,8 +1014,17 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
     m.toRotation = FootRotation(heading_, glm::radians(80.0f));
     m.to = AnkleForToe(toe, m.toRotation);
     m.lift = static_cast<float>(spec_.style.stepHeightM);
-    m.delay = i == 2 ? 0.0f : 0.3f;
     m.span = 0.7f;
+  }
+  // The hand with the shorter way goes first, with the foot on its side; the
+  // other two 0.3 of the move later. Mirrored starts so place in mirrored
+  // order: left always first stood 20 of 36 side_left starts against 30
+  // side_right, this 31 and 30 (and the diagonal foot first, 30 and 27, cost
+  // 8 prone starts).
+  const bool leftFirst = travel[0] <= travel[1];
+  for (int first : {0, 2}) {
+    move.limbs[first].delay = leftFirst ? 0.0f : 0.3f;
+    move.limbs[first + 1].delay = leftFirst ? 0.3f : 0.0f;
   }
   return move;
 }
