@@ -48,7 +48,7 @@ void GimbalRows(const Joint& joint, const glm::quat& frameA, const glm::quat& fr
   rows.limitAxis[0] = glm::cross(m, b3) / cosBeta;
   rows.angle[0] = alpha;
   rows.range[0] = joint.swingYLimits;
-  rows.limitAxis[1] = glm::cross(b3, a1) / cosBeta;
+  rows.limitAxis[1] = m;
   rows.angle[1] = beta;
   rows.range[1] = joint.swingZLimits;
   rows.limitAxis[2] = glm::cross(a1, m) / cosBeta;
