@@ -197,6 +197,9 @@ class RiseController {
   glm::vec3 PoseCom(const PoseGoal& goal) const;
   glm::vec3 PoseCom(const BodyPose& pose) const;
   void EvaluateLimb(const LimbMove& limb, Limb which, float s, const PoseGoal& trunkGoal, LimbGoal& out) const;
+  // Raises the goal of a hand or foot in a world-space swing that has not yet
+  // caught up with its spot, so it comes down only once over it.
+  void HoldAloftUntilOver(const Move& move, const BodyReading& reading, PoseGoal& goal) const;
   void StartMove(Move move);
   bool Fallen(const BodyReading& reading) const;
   // Crouched or standing on both feet with the CoM over them (sets the heading).
