@@ -1469,7 +1469,6 @@ RiseController::Move RiseController::PlanRise(const BodyReading& r) {
   move.to.pelvis = FeetCentre(r) + kUp * standPelvisHeight_ * 0.985f;
   for (int i = 0; i < 2; ++i) {
     LimbMove& m = move.limbs[i];
-    const Limb hand = static_cast<Limb>(i);
     const glm::quat chest = r.jointRotations[rig_.chest];
     m.mode = LimbMode::kBody;
     m.from = glm::inverse(chest) * (r.jointPositions[rig_.end[i]] - r.jointPositions[rig_.upper[i]]);
@@ -1477,7 +1476,6 @@ RiseController::Move RiseController::PlanRise(const BodyReading& r) {
     m.to = def_.skeleton.BindPositions()[rig_.end[i]] - def_.skeleton.BindPositions()[rig_.upper[i]];
     m.toRotation = glm::quat(1, 0, 0, 0);
     m.span = 0.6f;
-    (void)hand;
   }
   for (int i = 2; i < 4; ++i) {
     move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
