@@ -216,7 +216,7 @@ namespace {
 int CountStanding(const std::array<const char*, 4>& starts, bool rolled) {
   int stood = 0;
   for (const char* text : starts) {
-    INFO(text);
+    INFO(std::string(text));
     const auto spec = rise::ParseRiseSpec(text, "start.json");
     REQUIRE(spec.IsOk());
     const rise::GeneratedClip result = rise::GenerateClip(spec.Value());
@@ -347,7 +347,7 @@ TEST_CASE("phase 1: a hand or foot comes down from above its spot, not while sti
 
 TEST_CASE("phases 0 to 2: no hand or foot slides along the ground on the way up") {
   for (const char* text : kStandingStarts) {
-    INFO(text);
+    INFO(std::string(text));
     const auto spec = rise::ParseRiseSpec(text, "start.json");
     REQUIRE(spec.IsOk());
     const rise::QualityReport quality = rise::MeasureClip(rise::GenerateClip(spec.Value()).clip);
