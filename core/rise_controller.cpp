@@ -1250,6 +1250,30 @@ bool RiseController::SolesDown(const BodyReading& r) const {
   return true;
 }
 
+RiseController::Move RiseController::FinishCrawl(const BodyReading& r) {
+  const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
+  if (!SolesDown(r)) {
+    // Hands and feet are together (or no step works). The heels come down first, the CoM held
+    // over the toe edges with the hands still bearing: on its toes a body
+    // whose CoM goes back past the toe edges can only fall back (nothing
+    // behind them can push it forward again), while a flat sole reaches
+    // back to the heel.
+    Move move = OnAllFours(r, "heels down", 1.2);
+    for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
+    PlanTrunk(move, Project(ground_, toes) + kUp * (kSquatComRatio * standComHeight_), {true, true});
+    ++crawlSteps_;
+    return move;
+  }
+  // Then the CoM goes back over the flat soles, hips low, the hands still
+  // touching; the rise lets go of them once it is there.
+  Move move = OnAllFours(r, "sit back", 1.2);
+  for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
+  PlanTrunk(move, Project(ground_, toes - heading_ * kSitBackBehindSoles) + kUp * (kSquatComRatio * standComHeight_),
+            {true, true});
+  ++crawlSteps_;
+  return move;
+}
+
 RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   const SupportPolygon feet = FeetRegion(r);
   const float comToFeet = feet.SignedDistance(Ground(r.com));
@@ -1278,29 +1302,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     return move;
   }
   const std::vector<Limb> candidates = StepCandidates(r);
-  if (candidates.empty()) {
-    const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
-    if (!SolesDown(r)) {
-      // Hands and feet are together. The heels come down first, the CoM held
-      // over the toe edges with the hands still bearing: on its toes a body
-      // whose CoM goes back past the toe edges can only fall back (nothing
-      // behind them can push it forward again), while a flat sole reaches
-      // back to the heel.
-      Move move = OnAllFours(r, "heels down", 1.2);
-      for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
-      PlanTrunk(move, Project(ground_, toes) + kUp * (kSquatComRatio * standComHeight_), {true, true});
-      ++crawlSteps_;
-      return move;
-    }
-    // Then the CoM goes back over the flat soles, hips low, the hands still
-    // touching; the rise lets go of them once it is there.
-    Move move = OnAllFours(r, "sit back", 1.2);
-    for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
-    PlanTrunk(move, Project(ground_, toes - heading_ * kSitBackBehindSoles) + kUp * (kSquatComRatio * standComHeight_),
-              {true, true});
-    ++crawlSteps_;
-    return move;
-  }
+  if (candidates.empty()) return FinishCrawl(r);
   // The first candidate the CoM is balanced for steps; else the CoM shifts for
   // the current one, and after kMaxShiftTries the next candidate is tried.
   std::optional<Limb> step;
@@ -1326,6 +1328,11 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       }
     }
     shiftTries_ = 0;
+    // A centre after which no step and no shift works either was followed by
+    // the same centre until the time ran out (12 of 25 stress runs that ended
+    // in the crawl); from there the crawl ends as it does with hands and feet
+    // together.
+    if (move_.name == "centre") return FinishCrawl(r);
     Move move = OnAllFours(r, "centre", 0.8);
     std::vector<glm::vec2> points;
     for (int i = 0; i < kLimbCount; ++i) points.push_back(Ground(ContactPoint(r, static_cast<Limb>(i))));

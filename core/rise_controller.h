@@ -130,6 +130,8 @@ class RiseController {
   Move PlanPlace(const BodyReading& reading);
   Move PlanHandsDown(const BodyReading& reading) const;  // the hands left hovering by the place come straight down
   Move PlanPush(const BodyReading& reading);
+  // The end of the crawl: heels down, then the CoM back over the flat soles.
+  Move FinishCrawl(const BodyReading& reading);
   Move PlanCrawl(const BodyReading& reading);
   // Both soles flat on the ground.
   bool SolesDown(const BodyReading& reading) const;
