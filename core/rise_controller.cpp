@@ -1252,24 +1252,18 @@ bool RiseController::SolesDown(const BodyReading& r) const {
 
 RiseController::Move RiseController::FinishCrawl(const BodyReading& r) {
   const glm::vec3 toes = 0.5f * (ContactPoint(r, Limb::kFootLeft) + ContactPoint(r, Limb::kFootRight));
-  if (!SolesDown(r)) {
-    // Hands and feet are together (or no step works). The heels come down first, the CoM held
-    // over the toe edges with the hands still bearing: on its toes a body
-    // whose CoM goes back past the toe edges can only fall back (nothing
-    // behind them can push it forward again), while a flat sole reaches
-    // back to the heel.
-    Move move = OnAllFours(r, "heels down", 1.2);
-    for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
-    PlanTrunk(move, Project(ground_, toes) + kUp * (kSquatComRatio * standComHeight_), {true, true});
-    ++crawlSteps_;
-    return move;
-  }
-  // Then the CoM goes back over the flat soles, hips low, the hands still
-  // touching; the rise lets go of them once it is there.
-  Move move = OnAllFours(r, "sit back", 1.2);
+  // Hands and feet are together (or no step works). On the toes, the heels
+  // come down first, the CoM held over the toe edges with the hands still
+  // bearing: on its toes a body whose CoM goes back past the toe edges can
+  // only fall back (nothing behind them can push it forward again), while a
+  // flat sole reaches back to the heel. Then the CoM goes back over the flat
+  // soles, hips low, the hands still touching; the rise lets go of them once
+  // it is there.
+  const bool heelsUp = !SolesDown(r);
+  Move move = OnAllFours(r, heelsUp ? "heels down" : "sit back", 1.2);
   for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
-  PlanTrunk(move, Project(ground_, toes - heading_ * kSitBackBehindSoles) + kUp * (kSquatComRatio * standComHeight_),
-            {true, true});
+  const glm::vec3 back = heelsUp ? glm::vec3(0.0f) : heading_ * kSitBackBehindSoles;
+  PlanTrunk(move, Project(ground_, toes - back) + kUp * (kSquatComRatio * standComHeight_), {true, true});
   ++crawlSteps_;
   return move;
 }
