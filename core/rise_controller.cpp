@@ -113,12 +113,17 @@ constexpr float kMaxBalanceLean = 1.2f;   // rad the trunk may lean forward of i
 constexpr float kLeanRate = 0.8f;         // rad/s the balance lean may change
 // The feet walk in while the hands are farther than this ahead of them (from
 // nearer, a foot can hardly come further under a body bent at the hips); a
-// foot step is at most kFootStep long.
-constexpr float kFootWalkDistance = 0.5f;  // m
+// foot step is at most kFootStep long. The hips rise from the bear stance into
+// a pike as the hands come from kPikeStart to kFootWalkDistance ahead.
+constexpr float kFootWalkDistance = 0.5f;  // m at kTunedHeight
+constexpr float kPikeStart = 1.1f;         // m at kTunedHeight
 constexpr float kPikeComRatio = 0.62f;     // CoM height of the pike as the feet come in, of standing
-constexpr float kFootStep = 0.3f;          // m
+constexpr float kFootStep = 0.3f;          // m at kTunedHeight
 constexpr float kFootLead = 0.1f;          // m
 constexpr float kMinFootStep = 0.06f;      // m: a reachable step shorter than this ends the walk-in
+// The walk-in's lengths marked "at kTunedHeight" were tuned on a body this
+// tall; a body's own are these scaled by its height (WalkInLengths).
+constexpr float kTunedHeight = 1.75f;  // m
 // The roll (RiseController::RollAngle: 0 on the back, pi on the front): the far
 // foot pushes until the pelvis has turned this far, or has pushed off once
 // the pelvis is past kLiftOffRoll; the chest past kChestOverRoll has led over
@@ -209,6 +214,15 @@ RiseController::RiseController(const BipedDef& def, const RiseSpec& spec)
   legReach_ = glm::length(sk.joints[rig_.lower[2]].restOffset) + glm::length(sk.joints[rig_.end[2]].restOffset);
   standPelvisHeight_ = sk.BindPositions()[rig_.pelvis].y;
   standComHeight_ = def.BindCenterOfMass().y;
+  // How far the feet walk in, and in what steps, scales with the body's
+  // height: unscaled, none of 9 prone starts of 1.40-1.50 m stood, scaled 6
+  // did. Of 45 prone starts of 1.40-2.10 m 19 -> 26 stood and 13 -> 18 passed
+  // every bar, of 30 supine starts 12 -> 20 stood; 40 prone starts of
+  // 1.60-1.85 m: 36 -> 32 stood, 22 -> 23 passed. Also scaling the stance
+  // width, the lead between the feet, the shortest step and the CoM's margin
+  // behind the hands: 27 / 16, 21 and 34 / 19.
+  const float scale = static_cast<float>(spec.character.heightM) / kTunedHeight;
+  walkIn_ = {kFootWalkDistance * scale, kPikeStart * scale, kFootStep * scale};
   shoulderHalfWidth_ = std::fabs(sk.BindPositions()[rig_.upper[0]].x);
   // The crawl keeps the hips high (a pike), so knees stay off the ground.
   crawlComHeight_ = 0.5f * standComHeight_;
@@ -1144,7 +1158,7 @@ std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
   const float stagger = glm::dot(r.jointPositions[rig_.end[2]] - r.jointPositions[rig_.end[3]], heading_);
   const Limb rear = stagger < 0.0f ? Limb::kFootLeft : Limb::kFootRight;
   const float handsAhead = HandsAhead(r);
-  if (handsAhead <= kFootWalkDistance + kMinFootStep || feetIn_) {
+  if (handsAhead <= walkIn_.handsAhead + kMinFootStep || feetIn_) {
     if (std::fabs(stagger) > kMinFootStep) return {rear};
     return {};
   }
@@ -1163,7 +1177,7 @@ float RiseController::CrawlComHeight(const BodyReading& r) const {
   // The hips rise from the bear stance's height into a pike as the feet walk in
   // under them.
   const float handsAhead = HandsAhead(r);
-  const float in = std::clamp((1.1f - handsAhead) / (1.1f - kFootWalkDistance), 0.0f, 1.0f);
+  const float in = std::clamp((walkIn_.pikeStart - handsAhead) / (walkIn_.pikeStart - walkIn_.handsAhead), 0.0f, 1.0f);
   return glm::mix(crawlComHeight_, kPikeComRatio * standComHeight_, in);
 }
 
@@ -1382,9 +1396,9 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       // Feet come in side by side: a step ends at most kFootLead ahead of the other foot.
       const Limb other = limb == Limb::kFootLeft ? Limb::kFootRight : Limb::kFootLeft;
       const float behindOther = glm::dot(r.jointPositions[rig_.end[static_cast<int>(other)]] - r.jointPositions[rig_.end[i]], heading_);
-      nominalFootStep = std::clamp(std::min(handsAhead - kFootWalkDistance, behindOther + kFootLead), 0.05f, kFootStep);
+      nominalFootStep = std::clamp(std::min(handsAhead - walkIn_.handsAhead, behindOther + kFootLead), 0.05f, walkIn_.footStep);
       // In: the rear foot only comes up beside the other.
-      if (handsAhead <= kFootWalkDistance + kMinFootStep) nominalFootStep = std::clamp(behindOther, 0.0f, kFootStep);
+      if (handsAhead <= walkIn_.handsAhead + kMinFootStep) nominalFootStep = std::clamp(behindOther, 0.0f, walkIn_.footStep);
       const float length = fraction * nominalFootStep;
       // From the ankle, not the toe: with no hip twist the foot's yaw follows the
       // leg, so its toe can sit to one side, and stepping from there walked
