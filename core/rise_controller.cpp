@@ -41,6 +41,11 @@ constexpr int kMaxShiftTries = 2;
 // While a foot steps, the CoM stays this far behind the hands' line: over it
 // the body pivots on its hands.
 constexpr float kFootLiftHandLineMargin = 0.22f;  // m
+// ... and so far back that the shoulders, carried along with it, stay within
+// kShoulderLead of that line (see FootLiftCom).
+constexpr float kShoulderLead = 0.05f;  // m
+// A hand that steps back toward the feet at the end of the crawl goes this far.
+constexpr float kHandStepBack = 0.15f;  // m
 constexpr float kReachTolerance = 0.01f;  // m a planned limb may miss its place by
 constexpr float kLandedClearance = 0.02f;  // m above the ground a placed hand or foot counts as down
 constexpr float kLandingReach = 0.1f;      // m below the ground a limb being put down aims
@@ -1154,6 +1159,15 @@ std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
   for (int i = 0; i < kLimbCount; ++i) {
     if (Clearance(r, static_cast<Limb>(i)) > kLandedClearance) return {static_cast<Limb>(i)};
   }
+  // A heels-down that could not bring the CoM over the soles, the arms at full
+  // reach to hands far ahead: the hand farther ahead steps back toward the
+  // feet, as the paper's Phase 1 moves the free hand. (With the CoM held back
+  // by the shoulders' lead, rolled starts, whose stance is longer, ended the
+  // crawl with the hands ~0.7 m ahead of the ankles and repeated the heels-down
+  // until the time ran out: 108 rolled starts stood 85 -> 54; with this 84.)
+  if (move_.name == "heels down" && FeetRegion(r).SignedDistance(Ground(r.com)) >= kSitBackReach) {
+    return {HandsAhead(r, Limb::kHandLeft) >= HandsAhead(r, Limb::kHandRight) ? Limb::kHandLeft : Limb::kHandRight};
+  }
   // By the ankles, as the step length measures them (toe edges can sit askew).
   const float stagger = glm::dot(r.jointPositions[rig_.end[2]] - r.jointPositions[rig_.end[3]], heading_);
   const Limb rear = stagger < 0.0f ? Limb::kFootLeft : Limb::kFootRight;
@@ -1202,10 +1216,21 @@ glm::vec3 RiseController::FootLiftCom(const BodyReading& r, Limb foot) const {
       deep = (a * hl + b * hr + c * x) / (a + b + c);
     }
   }
-  // Never near the hands' line: over it the body pivots on its hands.
+  // Never near the hands' line: over it the body pivots on its hands. Nor so
+  // far forward that the shoulders pass well over the hands: the arms then
+  // lean forward, bent, and hold most of the weight; a 1.95 m body (its
+  // shoulders ~0.45 m ahead of its CoM, not ~0.33) buckled at the elbows and
+  // fell on its face in every prone start. kShoulderLead 0.12 / 0.08 / 0.05 /
+  // 0.04 / 0.02 / 0: 40 prone starts of 1.60-1.85 m passed every bar 25 / 30 /
+  // 40 / 40 / 30 / 23 (without: 23); 45 of 1.40-2.10 m stood 31 / 31 / 41 / 42
+  // / 24 / 24 (26) and passed 22 / 25 / 33 / 34 / 21 / 19 (18). (Measured
+  // before the hand's step back of StepCandidates; with it, 0.05: 40, 42, 33.)
   const glm::vec2 forward = glm::normalize(Ground(heading_));
   const float handLine = std::min(glm::dot(hl, forward), glm::dot(hr, forward));
-  deep -= forward * std::max(0.0f, glm::dot(deep, forward) - (handLine - kFootLiftHandLineMargin));
+  const glm::vec3 shoulders = 0.5f * (r.jointPositions[rig_.upper[0]] + r.jointPositions[rig_.upper[1]]);
+  const float shouldersAhead = glm::dot(Ground(shoulders - r.com), forward);
+  const float margin = std::max(kFootLiftHandLineMargin, shouldersAhead - kShoulderLead);
+  deep -= forward * std::max(0.0f, glm::dot(deep, forward) - (handLine - margin));
   return Project(ground_, glm::vec3(deep.x, 0.0f, deep.y)) + kUp * CrawlComHeight(r);
 }
 
@@ -1375,10 +1400,12 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     Move move = OnAllFours(r, IsArm(limb) ? "hand step" : "foot step", 0.7);
     LimbMove& m = move.limbs[i] = HoldLimb(r, limb, false);
     if (IsArm(limb)) {
-      // (Hands only step to come down: StepCandidates.) Where it is along the
-      // heading, back beside the shoulder's line across it.
+      // (Hands step only to come down, or back at the crawl's end:
+      // StepCandidates.) Where it is along the heading, less the step back,
+      // and beside the shoulder's line across it.
       const float side = IsLeft(limb) ? 1.0f : -1.0f;
-      const glm::vec3 spot = Project(ground_, FeetCentre(r) + heading_ * HandsAhead(r, limb) + left * side * shoulderHalfWidth_ * 0.75f);
+      const float back = putDown ? 0.0f : kHandStepBack;
+      const glm::vec3 spot = Project(ground_, FeetCentre(r) + heading_ * (HandsAhead(r, limb) - back) + left * side * shoulderHalfWidth_ * 0.75f);
       m.toRotation = PlantedHandRotation(limb);
       m.to = WristAbove(limb, spot, m.toRotation);
       m.lift = HandSwingLift(limb);
