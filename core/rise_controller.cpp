@@ -768,6 +768,10 @@ bool RiseController::OnItsFeet(const BodyReading& r) {
   return FeetRegion(r).SignedDistance(Ground(r.com)) < -0.02f;
 }
 
+bool RiseController::Standing(double time) const {
+  return phase_ == RisePhase::kStand && standTime_ >= 0.0 && time - standTime_ >= kStandHold;
+}
+
 bool RiseController::Fallen(const BodyReading& r) const {
   const float pelvisHeight = Height(ground_, r.jointPositions[rig_.pelvis]);
   // Built only when the cheap tests have not decided: this runs every step.

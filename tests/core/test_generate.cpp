@@ -243,6 +243,23 @@ TEST_CASE("phases 0 to 2: lying prone, the body gets up on its hands and feet, b
   CHECK(CountStanding(kStandingStarts, false) >= 3);
 }
 
+TEST_CASE("a body standing at the end has stood, even one that never comes to rest") {
+  // Heavy, prone on a 10 deg slope: it stands from about 13.6 s but sways
+  // fore and aft (its head at 0.2 m/s), so the clip runs to its end without
+  // the still stand that ends it early; it was reported as "did not stand"
+  // (exit 1) while the clip passed every quality bar.
+  const auto spec = rise::ParseRiseSpec(
+      R"({"character":{"height_m":1.75,"mass_kg":110},"start":{"posture":"prone"},"terrain":{"slope_deg":10}})", "start.json");
+  REQUIRE(spec.IsOk());
+  const rise::GeneratedClip result = rise::GenerateClip(spec.Value());
+  const rise::QualityReport quality = rise::MeasureClip(result.clip, rise::QualityOptionsFor(result.clip));
+  INFO(result.outcome << ", clip " << result.clip.Duration() << " s");
+  REQUIRE(quality.endsStanding);
+  CHECK(result.stood);
+  CHECK(result.timeToStand > 0.0);
+  CHECK(result.timeToStand < result.clip.Duration() - 1.0);
+}
+
 TEST_CASE("a clip that stands ends on a still, neutral stand an engine can blend into its idle") {
   // Issue 5: the last frame is a still neutral stand. Still: over the last
   // 0.5 s no joint moves more than a standing body's sway (2.4 cm measured,
