@@ -169,7 +169,7 @@ GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& setting
   metadata.parametersJson = RiseSpecToJson(spec).dump();
   metadata.generatorVersion = RISE_VERSION;
   metadata.seed = spec.seed;
-  result.stood = controller.Finished() || controller.Standing(end);
+  result.stood = controller.Standing(end);  // Finished() implies it
   result.timeToStand = result.stood ? controller.StandTime() : -1.0;
   metadata.timeToStand = result.timeToStand;
   for (int j = 1; j < jointCount; ++j) {
