@@ -1756,7 +1756,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
       PlanNext(reading);
     } else if (progress_ >= 1.0f && (lag < kGateStop || rolling)) {
       if (phase_ == RisePhase::kStand) {
-        finished_ = reading.time - standTime_ >= kStandHold && reading.maxBodySpeed < kRestSpeed;
+        finished_ = Standing(reading.time) && reading.maxBodySpeed < kRestSpeed;
         if (!finished_) PlanNext(reading);
       } else {
         PlanNext(reading);
