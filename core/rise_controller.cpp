@@ -135,6 +135,8 @@ constexpr float kTunedHeight = 1.75f;  // m
 // and the legs straighten; both past kProneRoll lie prone.
 constexpr float kLiftOffRoll = glm::radians(30.0f);
 constexpr float kPushedRoll = glm::radians(60.0f);
+// A far leg whose ankle is this far from its hip, of the leg's reach, is set to push.
+constexpr float kTuckedLeg = 0.8f;
 constexpr float kChestOverRoll = glm::radians(125.0f);
 constexpr float kProneRoll = glm::radians(135.0f);
 // Shoulder flexion past which an arm lies overhead.
@@ -860,6 +862,12 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
     const float leftDown = -glm::dot(chest * glm::vec3(1, 0, 0), ground_.normal);
     rollSign_ = std::fabs(leftDown) > 0.3f ? (leftDown > 0.0f ? 1.0f : -1.0f) : ((rng_() & 1u) ? 1.0f : -1.0f);
   }
+  // A body that has turned well past its back the other way (a slope or its
+  // own limbs rolled it there) rolls on over that side. Measured the planned
+  // way it looked as if it had not pushed off yet, and the push went on
+  // against it until the roll's moves ran out: in 126 failed stress runs,
+  // push offs were 94 of the falls.
+  if (std::max(RollAngle(pelvis), RollAngle(chest)) < -kPushedRoll) rollSign_ = -rollSign_;
   const float pelvisRoll = RollAngle(pelvis), chestRoll = RollAngle(chest);
   const bool prone = std::min(pelvisRoll, chestRoll) > kProneRoll;
   // Lying on the front with the legs straightened: an arm left overhead comes
@@ -879,7 +887,14 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   // get the body as far as planned is followed by the one that fits where it is.
   RollStage stage = RollStage::kOver;
   if (prone || chestRoll > kChestOverRoll) stage = RollStage::kLie;
-  if (pelvisRoll < kPushedRoll) stage = rollStage_ == RollStage::kNone ? RollStage::kTuck : RollStage::kPush;
+  // The push needs the far foot down near the buttock, the knee up: a leg
+  // left straight (a roll that fell back, or a custom start) only slid its
+  // foot, and the push went on until the roll's moves ran out.
+  const int far = static_cast<int>(farLeg);
+  const bool farFootSet = Clearance(r, farLeg) < kLandedClearance &&
+                          glm::length(r.jointPositions[rig_.end[far]] - r.jointPositions[rig_.upper[far]]) < kTuckedLeg * legReach_;
+  const bool firstMove = rollStage_ == RollStage::kNone;
+  if (pelvisRoll < kPushedRoll) stage = firstMove || !farFootSet ? RollStage::kTuck : RollStage::kPush;
   const bool pushedOff = pelvisRoll > kLiftOffRoll && !r.touching[static_cast<int>(farLeg)];
   if (stage == RollStage::kPush && pushedOff) stage = RollStage::kOver;
   rollStage_ = stage;
@@ -890,7 +905,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   // bench/prone_variants 36 supine at 30 s: 17 stand (8 overhead), the worst
   // hand slide 14-31 cm. From a side the arm lies in front already and goes
   // overhead as before (alongside, 5 and 2 of 24 stood against 9 and 13).
-  if (stage == RollStage::kTuck) logRoll_ = true;
+  if (stage == RollStage::kTuck && firstMove) logRoll_ = true;
   const std::array<float, 5> nearArmAlongside{0, 0, 10, 0, 0};
 
   heading_ = HeadingForward(r);
