@@ -137,6 +137,8 @@ constexpr float kLiftOffRoll = glm::radians(30.0f);
 constexpr float kPushedRoll = glm::radians(60.0f);
 // A far leg whose ankle is this far from its hip, of the leg's reach, is set to push.
 constexpr float kTuckedLeg = 0.8f;
+// ... and its foot no higher than this over the ground: the push off presses it down.
+constexpr float kTuckedClearance = 0.2f;  // m
 constexpr float kChestOverRoll = glm::radians(125.0f);
 constexpr float kProneRoll = glm::radians(135.0f);
 // Shoulder flexion past which an arm lies overhead.
@@ -891,7 +893,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   // left straight (a roll that fell back, or a custom start) only slid its
   // foot, and the push went on until the roll's moves ran out.
   const int far = static_cast<int>(farLeg);
-  const bool farFootSet = Clearance(r, farLeg) < kLandedClearance &&
+  const bool farFootSet = Clearance(r, farLeg) < kTuckedClearance &&
                           glm::length(r.jointPositions[rig_.end[far]] - r.jointPositions[rig_.upper[far]]) < kTuckedLeg * legReach_;
   const bool firstMove = rollStage_ == RollStage::kNone;
   if (pelvisRoll < kPushedRoll) stage = firstMove || !farFootSet ? RollStage::kTuck : RollStage::kPush;
@@ -953,7 +955,13 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       move.duration = 0.8;
       move.to = RolledTrunk(r, glm::radians(140.0f) - pelvisRoll, 0.0f);
       move.rolledTo = kPushedRoll;
-      set(farLeg, HoldLimb(r, farLeg, true));
+      {
+        // Held where it is, a tucked foot left hovering (the pelvis half
+        // turned, say) stayed up and the push went into the air.
+        LimbMove foot = HoldLimb(r, farLeg, true);
+        foot.to -= ground_.normal * Clearance(r, farLeg);
+        set(farLeg, foot);
+      }
       set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
       break;
     case RollStage::kOver: {
