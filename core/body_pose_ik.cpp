@@ -76,9 +76,9 @@ glm::vec2 SolveTwoAxes(const BodyRig::Axis& axis0, const BodyRig::Axis& axis1, c
   if (radius > 1e-6f) {
     const float phase = std::atan2(B, A);
     const float spread = std::acos(std::clamp(C / radius, -1.0f, 1.0f));
-    // Of the two solutions, the one nearer the joint's range (then the smaller turn).
+    // Of the two solutions (each already in [-pi, pi]), the one nearer the
+    // joint's range (then the smaller turn).
     const auto cost = [&](float angle) {
-      angle = std::remainder(angle, 2.0f * glm::pi<float>());
       const float outside = std::max(0.0f, axis1.lower - angle) + std::max(0.0f, angle - axis1.upper);
       return std::make_pair(outside, std::fabs(angle));
     };

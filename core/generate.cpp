@@ -88,7 +88,7 @@ GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& setting
               static_cast<float>(spec.terrain.friction));
   biped.SetServosEnabled(true);
 
-  RiseController controller(biped.Def(), spec);
+  RiseController controller(biped.Def(), spec, settings.keepTrace);
   const BodyRig rig = BodyRig::FromDef(def);
   const int jointCount = def.skeleton.JointCount();
   const double dt = world.Settings().timeStep;

@@ -214,8 +214,9 @@ const char* RisePhaseName(RisePhase phase) {
   return "?";
 }
 
-RiseController::RiseController(const BipedDef& def, const RiseSpec& spec)
-    : def_(def), spec_(spec), ground_(GroundPlane(spec.terrain.slopeDeg)), rng_(static_cast<uint32_t>(spec.seed)) {
+RiseController::RiseController(const BipedDef& def, const RiseSpec& spec, bool tracing)
+    : def_(def), spec_(spec), ground_(GroundPlane(spec.terrain.slopeDeg)), rng_(static_cast<uint32_t>(spec.seed)),
+      tracing_(tracing) {
   rig_ = BodyRig::FromDef(def);
   for (const BoneDef& bone : def.bones) totalMass_ += bone.massKg;
   const Skeleton& sk = def.skeleton;
@@ -770,6 +771,11 @@ bool RiseController::OnItsFeet(const BodyReading& r) {
   }
   heading_ = SafeNormalize(Horizontal(r.jointRotations[rig_.pelvis] * glm::vec3(0, 0, 1)), heading_);
   return FeetRegion(r).SignedDistance(Ground(r.com)) < -0.02f;
+}
+
+const TraceSample& RiseController::LastTrace() const {
+  RISE_ASSERT(tracing_);
+  return trace_;
 }
 
 bool RiseController::Standing(double time) const {
@@ -1807,10 +1813,13 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     for (int i = 0; i < 2; ++i) {
       if (planted_[i]) out.gainScale[rig_.end[i]] = kPlantedWristGain;
     }
-    trace_.comGoal = PoseCom(goal);
-    for (int i = 0; i < kLimbCount; ++i) trace_.limbTargets[i] = goal.limbs[i].target;
+    if (tracing_) {
+      trace_.comGoal = PoseCom(pose);
+      for (int i = 0; i < kLimbCount; ++i) trace_.limbTargets[i] = goal.limbs[i].target;
+    }
   }
 
+  if (!tracing_) return;
   trace_.time = reading.time;
   trace_.phase = phase_;
   trace_.move = hasMove_ ? move_.name : "settle";

@@ -62,7 +62,9 @@ struct TraceSample {
 
 class RiseController {
  public:
-  RiseController(const BipedDef& def, const RiseSpec& spec);
+  // With tracing, each Update also fills LastTrace() (an IK solve and two
+  // support hulls a step, which a clip without a trace does not pay for).
+  RiseController(const BipedDef& def, const RiseSpec& spec, bool tracing = false);
 
   // One control step: reads the body, writes the servo targets.
   void Update(const BodyReading& reading, ServoTargets& out);
@@ -78,7 +80,7 @@ class RiseController {
   double StandTime() const { return standTime_; }
   // Limbs the plan treats as planted supports right now.
   const std::array<bool, kLimbCount>& Planted() const { return planted_; }
-  const TraceSample& LastTrace() const { return trace_; }
+  const TraceSample& LastTrace() const;
   // How many times a fall sent the plan back to an earlier phase.
   int Retries() const { return retries_; }
   // True once the body has fallen after its last retry and come to rest: it
@@ -267,6 +269,7 @@ class RiseController {
   float balanceLean_ = 0.0f;
   glm::vec3 crawlOffset_{0.0f};
   std::array<bool, kLimbCount> planted_{};
+  bool tracing_ = false;
   TraceSample trace_;
 };
 
