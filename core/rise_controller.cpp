@@ -26,6 +26,10 @@ const glm::vec3 kUp(0.0f, 1.0f, 0.0f);
 constexpr float kRestSpeed = 0.08f;         // m/s
 constexpr float kRestSpin = 0.4f;           // rad/s
 constexpr double kRestHold = 0.25;          // s the body must stay below both
+// A clip that ends after the last fall ends on a body at rest by this speed: at
+// kRestSpeed, one creeping down a 20 deg slope at 3 cm/s counted as at rest and
+// the clip's last frames slid 1 mm each.
+constexpr float kFinalRestSpeed = 0.02f;    // m/s
 // Standing still long enough to end the clip (the checker looks at the last 0.5 s).
 constexpr double kStandHold = 1.2;          // s
 // Tracking-error gate: moves slow down when the pelvis lags its goal.
@@ -1714,7 +1718,8 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
 
   if (phase_ == RisePhase::kSettle && !hasMove_) {
     // Hold whatever pose the body fell into until it has come to rest.
-    const bool still = reading.maxBodySpeed < kRestSpeed && reading.maxAngularSpeed < kRestSpin;
+    const float restSpeed = givingUp_ ? kFinalRestSpeed : kRestSpeed;
+    const bool still = reading.maxBodySpeed < restSpeed && reading.maxAngularSpeed < kRestSpin;
     if (!still) restSince_ = -1.0;
     else if (restSince_ < 0.0) restSince_ = reading.time;
     // A body already balanced on its feet is not lying: it must not sag while it
