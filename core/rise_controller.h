@@ -247,6 +247,9 @@ class RiseController {
   Move move_;
   bool hasMove_ = false;
   float progress_ = 0.0f;
+  // The pelvis goal last handed to the servos: the move's tracking error is the
+  // measured pelvis's distance from it.
+  glm::vec3 pelvisGoal_{0.0f};
   double lastTime_ = 0.0;
   double restSince_ = -1.0;
   double stalledSince_ = -1.0;
