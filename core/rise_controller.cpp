@@ -120,6 +120,7 @@ constexpr float kBalanceDamping = 6.0f;    // 1/s
 constexpr float kMaxBalanceSlide = 0.1f;  // m the pelvis may slide from its planned place
 constexpr float kMaxBalanceLean = 1.2f;   // rad the trunk may lean forward of its plan
 constexpr float kLeanRate = 0.8f;         // rad/s the balance lean may change
+constexpr float kLeanTolerance = 0.002f;  // rad: the balance lean's search stops this close
 // The feet walk in while the hands are farther than this ahead of them (from
 // nearer, a foot can hardly come further under a body bent at the hips); a
 // foot step is at most kFootStep long. The hips rise from the bear stance into
@@ -636,7 +637,7 @@ bool RiseController::FeetFlat(const PoseGoal& goal) const {
   return pose.reached[2] && pose.reached[3] && pose.endMatched[2] && pose.endMatched[3];
 }
 
-float RiseController::BalanceLean(const Move& move, float s, const BodyReading& reading) const {
+float RiseController::BalanceLean(const Move& move, float s, const BodyReading& reading, float lo, float hi) const {
   // Hip strategy: how far the trunk leans forward of the plan (never back) for
   // the pose's CoM to reach the balance point along the heading. Leaning is
   // what keeps a rise out of a deep squat feasible, where the ankles cannot
@@ -651,10 +652,10 @@ float RiseController::BalanceLean(const Move& move, float s, const BodyReading& 
     if (!pose.reached[2] || !pose.reached[3] || !pose.endMatched[2] || !pose.endMatched[3]) return 1.0f;
     return glm::dot(PoseCom(pose) - target, heading_);
   };
-  float lo = 0.0f, hi = kMaxBalanceLean;
+  lo = std::max(lo, 0.0f), hi = std::min(hi, kMaxBalanceLean);
   if (ahead(hi) < 0.0f) return hi;
   if (ahead(lo) >= 0.0f) return lo;
-  for (int iteration = 0; iteration < 7; ++iteration) {
+  while (hi - lo > kLeanTolerance) {
     const float mid = 0.5f * (lo + hi);
     (ahead(mid) < 0.0f ? lo : hi) = mid;
   }
@@ -1564,7 +1565,7 @@ RiseController::Move RiseController::PlanRise(const BodyReading& r) {
     move.limbs[i].span = 0.5f;
   }
   balanceOffset_ = glm::vec3(0.0f);
-  balanceLean_ = BalanceLean(move, 0.0f, r);
+  balanceLean_ = BalanceLean(move, 0.0f, r, 0.0f, kMaxBalanceLean);
   return move;
 }
 
@@ -1763,9 +1764,9 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
       if (glm::length(crawlOffset_) > kMaxCrawlOffset) crawlOffset_ *= kMaxCrawlOffset / glm::length(crawlOffset_);
     }
     if (move_.keepComOverFeet) {
-      const float lean = BalanceLean(move_, progress_, reading);
+      // The lean changes at most kLeanRate, so only that band is searched.
       const float step = kLeanRate * static_cast<float>(dt);
-      balanceLean_ += std::clamp(lean - balanceLean_, -step, step);
+      balanceLean_ = BalanceLean(move_, progress_, reading, balanceLean_ - step, balanceLean_ + step);
       // Integral feedback on the measured CoM keeps the balance goal honest
       // when the model's masses or the servos' sag differ from the plan.
       glm::vec3 error = BalancePoint(reading) - reading.com;

@@ -199,7 +199,9 @@ class RiseController {
   // Evaluation of the current move at progress s in [0, 1].
   // balance: apply Phase 2's balance (lean and slide) to moves that keep the CoM over the feet.
   PoseGoal GoalAt(const Move& move, float s, const BodyReading& reading, bool balance = true) const;
-  float BalanceLean(const Move& move, float s, const BodyReading& reading) const;
+  // The lean in [lo, hi] (within 0..kMaxBalanceLean) that brings the pose's CoM
+  // to the balance point along the heading, or the end of the band nearer it.
+  float BalanceLean(const Move& move, float s, const BodyReading& reading, float lo, float hi) const;
   void Lean(const Move& move, float s, float lean, PoseGoal& goal) const;
   bool FeetFlat(const PoseGoal& goal) const;
   glm::vec3 PoseCom(const PoseGoal& goal) const;
