@@ -95,21 +95,35 @@ glm::vec2 SolveTwoAxes(const BodyRig::Axis& axis0, const BodyRig::Axis& axis1, c
   return {std::clamp(a, axis0.lower, axis0.upper), b};
 }
 
+namespace {
+
+// The chest joint (where the shoulders hang) of the goal's trunk, with the abdomen's rotation.
+glm::vec3 ChestJoint(const Skeleton& skeleton, const BodyRig& rig, const PoseGoal& goal, const glm::quat& abdomen) {
+  return goal.pelvisPosition + goal.pelvisRotation * skeleton.joints[rig.abdomen].restOffset +
+         abdomen * skeleton.joints[rig.chest].restOffset;
+}
+
+// The shoulder or hip joint of `limb`, with the chest joint (unused for a leg).
+glm::vec3 RootJoint(const Skeleton& skeleton, const BodyRig& rig, const PoseGoal& goal, Limb limb, const glm::vec3& chest) {
+  const glm::vec3 offset = skeleton.joints[rig.upper[static_cast<int>(limb)]].restOffset;
+  return IsArm(limb) ? chest + goal.chestRotation * offset : goal.pelvisPosition + goal.pelvisRotation * offset;
+}
+
+}  // namespace
+
 glm::vec3 LimbRoot(const Skeleton& skeleton, const BodyRig& rig, const PoseGoal& goal, Limb limb) {
-  const int i = static_cast<int>(limb);
-  const glm::vec3 abdomen = goal.pelvisPosition + goal.pelvisRotation * skeleton.joints[rig.abdomen].restOffset;
-  if (!IsArm(limb)) return goal.pelvisPosition + goal.pelvisRotation * skeleton.joints[rig.upper[i]].restOffset;
-  const glm::vec3 chest = abdomen + Abdomen(goal) * skeleton.joints[rig.chest].restOffset;
-  return chest + goal.chestRotation * skeleton.joints[rig.upper[i]].restOffset;
+  return RootJoint(skeleton, rig, goal, limb, IsArm(limb) ? ChestJoint(skeleton, rig, goal, Abdomen(goal)) : glm::vec3(0.0f));
 }
 
 BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseGoal& goal) {
   BodyPose pose;
+  const glm::quat abdomen = Abdomen(goal);
   pose.worldRotations.assign(skeleton.joints.size(), goal.chestRotation);
   pose.worldRotations[rig.pelvis] = goal.pelvisRotation;
-  pose.worldRotations[rig.abdomen] = Abdomen(goal);
+  pose.worldRotations[rig.abdomen] = abdomen;
   pose.worldRotations[rig.chest] = goal.chestRotation;
   pose.worldRotations[rig.head] = goal.headRotation;
+  const glm::vec3 chest = ChestJoint(skeleton, rig, goal, abdomen);
 
   for (int i = 0; i < kLimbCount; ++i) {
     const Limb limb = static_cast<Limb>(i);
@@ -118,7 +132,7 @@ BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseG
     const glm::vec3 upperBone = skeleton.joints[rig.lower[i]].restOffset;
     const glm::vec3 lowerBone = skeleton.joints[rig.end[i]].restOffset;
     const float l1 = glm::length(upperBone), l2 = glm::length(lowerBone);
-    const glm::vec3 reach = glm::inverse(parent) * (limbGoal.target - LimbRoot(skeleton, rig, goal, limb));
+    const glm::vec3 reach = glm::inverse(parent) * (limbGoal.target - RootJoint(skeleton, rig, goal, limb, chest));
     const float distance = glm::length(reach);
 
     // Hinge from the distance; both bones point along -Y at rest, so the
@@ -129,9 +143,9 @@ BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseG
     const glm::quat hingeRotation = glm::angleAxis(bend, hinge.axis);
     const glm::vec3 limbVector = upperBone + hingeRotation * lowerBone;
     const glm::vec3 toward = distance > 1e-6f ? reach / distance : glm::normalize(limbVector);
-    const glm::vec2 root = SolveTwoAxes(rig.rootDofs[i][0], rig.rootDofs[i][1], glm::normalize(limbVector), toward);
+    const glm::vec2 rootAngles = SolveTwoAxes(rig.rootDofs[i][0], rig.rootDofs[i][1], glm::normalize(limbVector), toward);
     const glm::quat rootRotation =
-        glm::angleAxis(root.x, rig.rootDofs[i][0].axis) * glm::angleAxis(root.y, rig.rootDofs[i][1].axis);
+        glm::angleAxis(rootAngles.x, rig.rootDofs[i][0].axis) * glm::angleAxis(rootAngles.y, rig.rootDofs[i][1].axis);
     pose.worldRotations[rig.upper[i]] = glm::normalize(parent * rootRotation);
     pose.worldRotations[rig.lower[i]] = glm::normalize(pose.worldRotations[rig.upper[i]] * hingeRotation);
 
@@ -139,10 +153,11 @@ BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseG
     const glm::quat lowerWorld = pose.worldRotations[rig.lower[i]];
     const glm::vec3 wanted = glm::normalize(glm::inverse(lowerWorld) * (limbGoal.endRotation * rig.endKey[i]));
     const glm::vec2 end = SolveTwoAxes(rig.endDofs[i][0], rig.endDofs[i][1], rig.endKey[i], wanted);
-    pose.worldRotations[rig.end[i]] = glm::normalize(
-        lowerWorld * glm::angleAxis(end.x, rig.endDofs[i][0].axis) * glm::angleAxis(end.y, rig.endDofs[i][1].axis));
+    const glm::quat endFirst = glm::angleAxis(end.x, rig.endDofs[i][0].axis);
+    const glm::quat endSecond = glm::angleAxis(end.y, rig.endDofs[i][1].axis);
+    pose.worldRotations[rig.end[i]] = glm::normalize(lowerWorld * endFirst * endSecond);
 
-    const glm::vec3 endKey = glm::angleAxis(end.x, rig.endDofs[i][0].axis) * glm::angleAxis(end.y, rig.endDofs[i][1].axis) * rig.endKey[i];
+    const glm::vec3 endKey = endFirst * endSecond * rig.endKey[i];
     pose.reached[i] = glm::length(rootRotation * limbVector - reach) < 1e-3f;
     pose.endMatched[i] = glm::dot(endKey, wanted) > kEndKeyCos;
   }
