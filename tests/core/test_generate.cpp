@@ -142,6 +142,18 @@ TEST_CASE("two runs of the same spec give bit-identical clips") {
   CHECK(a.clip.metadata.parametersJson == b.clip.metadata.parametersJson);
 }
 
+TEST_CASE("asking for the debug trace does not change the clip") {
+  // The controller fills its trace only when asked (an IK solve and two support
+  // hulls a step); what it plans must not depend on it.
+  rise::GenerateSettings traced;
+  traced.keepTrace = true;
+  const rise::GeneratedClip a = rise::GenerateClip(ProneSpec(5.0), traced);
+  const rise::GeneratedClip b = rise::GenerateClip(ProneSpec(5.0));
+  CHECK(a.trace.size() > 1000u);
+  CHECK(b.trace.empty());
+  CHECK(SameClip(a.clip, b.clip));
+}
+
 TEST_CASE("a prone body settles, places its hands and feet and pushes up onto them") {
   rise::GenerateSettings settings;
   settings.keepTrace = true;
