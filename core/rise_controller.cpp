@@ -662,7 +662,9 @@ float RiseController::BalanceLean(const Move& move, float s, const BodyReading& 
   return lo;
 }
 
-PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& reading, bool balance) const {
+PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& reading, bool balance,
+                                std::optional<BodyPose>* solved) const {
+  if (solved) solved->reset();
   const float e = Ease(s);
   PoseGoal goal;
   goal.pelvisPosition = glm::mix(move.from.pelvis, move.to.pelvis, e);
@@ -693,19 +695,24 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
     // more than how the trunk is turned: the pelvis goal moves by the measured
     // CoM's horizontal error (and its integral, crawlOffset_), which the
     // planted limbs turn into a shift of the whole body.
-    glm::vec3 error = PoseCom(goal) - reading.com;
+    BodyPose plannedPose = SolveBodyPose(def_.skeleton, rig_, goal);
+    glm::vec3 error = PoseCom(plannedPose) - reading.com;
     error.y = 0.0f;
     // Only as far as every hand and foot can still reach its place: past that
     // the servos would be asked for a pose whose feet are off their spots.
     const glm::vec3 planned = goal.pelvisPosition;
     glm::vec3 shift = kCrawlComGain * error + crawlOffset_;
-    for (int halving = 0; halving < 6; ++halving, shift *= 0.5f) {
+    BodyPose shifted;
+    bool reached = false;
+    for (int halving = 0; halving < 6 && !reached; ++halving, shift *= 0.5f) {
       goal.pelvisPosition = planned + shift;
-      if (LimbsReach(move, goal)) break;
-      goal.pelvisPosition = planned;
+      reached = LimbsReach(move, goal, &shifted);
+      if (!reached) goal.pelvisPosition = planned;
     }
+    if (solved) *solved = std::move(reached ? shifted : plannedPose);
   }
   if (move.keepComOverFeet && balance && !reading.jointPositions.empty()) {
+    if (solved) solved->reset();
     // Primary constraint of Phase 2: the whole-body CoM over the feet. The
     // trunk leans by balanceLean_ (the hip strategy, planned and smoothed in
     // Update); then the pelvis slides along the ground (the ankle strategy)
@@ -1503,14 +1510,15 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
 
 bool RiseController::Reachable(const Move& move) const { return LimbsReach(move, GoalAt(move, 1.0f, BodyReading{})); }
 
-bool RiseController::LimbsReach(const Move& move, const PoseGoal& goal) const {
-  const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
+bool RiseController::LimbsReach(const Move& move, const PoseGoal& goal, BodyPose* solved) const {
+  BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
   for (int i = 0; i < kLimbCount; ++i) {
     if (move.limbs[i].mode != LimbMode::kBody &&
         glm::length(pose.worldPositions[rig_.end[i]] - goal.limbs[i].target) > kReachTolerance) {
       return false;
     }
   }
+  if (solved) *solved = std::move(pose);
   return true;
 }
 
@@ -1815,9 +1823,10 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     out.local = LocalRotations(def_.skeleton, reading.jointRotations);
     std::fill(out.gainScale.begin(), out.gainScale.end(), 0.3f);
   } else {
-    const PoseGoal goal = GoalAt(move_, progress_, reading);
+    std::optional<BodyPose> solved;
+    const PoseGoal goal = GoalAt(move_, progress_, reading, true, &solved);
     pelvisGoal_ = goal.pelvisPosition;
-    const BodyPose pose = SolveBodyPose(def_.skeleton, rig_, goal);
+    const BodyPose pose = solved ? std::move(*solved) : SolveBodyPose(def_.skeleton, rig_, goal);
     out.local = LocalRotations(def_.skeleton, pose.worldRotations);
     // The plan's CoM is only needed for the virtual force on hands and feet.
     const glm::vec3 comGoal = OnHandsAndFeet(phase_) ? PoseCom(GoalAt(move_, progress_, reading, false)) : reading.com;

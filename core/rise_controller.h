@@ -158,7 +158,7 @@ class RiseController {
   // Whether the move's end pose puts every held or moving hand and foot on its place.
   bool Reachable(const Move& move) const;
   // Whether a pose goal puts every held or moving hand and foot of the move on its place.
-  bool LimbsReach(const Move& move, const PoseGoal& goal) const;
+  bool LimbsReach(const Move& move, const PoseGoal& goal, BodyPose* solved = nullptr) const;
   // A move on both hands and both feet, all held where they are.
   Move OnAllFours(const BodyReading& reading, const char* name, double duration) const;
   Move PlanRise(const BodyReading& reading);
@@ -198,7 +198,10 @@ class RiseController {
 
   // Evaluation of the current move at progress s in [0, 1].
   // balance: apply Phase 2's balance (lean and slide) to moves that keep the CoM over the feet.
-  PoseGoal GoalAt(const Move& move, float s, const BodyReading& reading, bool balance = true) const;
+  // solved, if given, receives the pose of the returned goal when the balance
+  // search already solved it (else it is left empty).
+  PoseGoal GoalAt(const Move& move, float s, const BodyReading& reading, bool balance = true,
+                  std::optional<BodyPose>* solved = nullptr) const;
   // The lean in [lo, hi] (within 0..kMaxBalanceLean) that brings the pose's CoM
   // to the balance point along the heading, or the end of the band nearer it.
   float BalanceLean(const Move& move, float s, const BodyReading& reading, float lo, float hi) const;
