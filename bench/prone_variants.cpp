@@ -2,13 +2,17 @@
 // The crawl's development harness: twelve starts (heading k*37 deg, seed k+1, height 1.60..1.85 m,
 // mass 55..97 kg) run through the validated loader, as the command line runs them, each printed
 // with its outcome, the furthest phase, how close the CoM came to the feet (negative: over them),
-// how close the feet came to the hands, and the time spent in each move.
+// how close the feet came to the hands, and the time spent in each move; then each hand or foot
+// whose worst contact slid past the quality bar, with the moves that contact spans (where a
+// slide comes from), and at the end how many starts pass every bar.
 //
 //   prone_variants [count] [only] [posture]
 //   env: DUR (max_duration_s, 20), SPEED (style.speed, 1), FRIC (terrain.friction, 0.8), TRACE=file (JSON lines of `only`),
 //        OUT=dir (dir/v.glb of `only`)
 #include "bench/variant_run.h"
 #include "core/clip_output.h"
+#include "core/clip_check.h"
+#include "core/clip_quality.h"
 #include "core/generate.h"
 
 #include <glm/geometric.hpp>
@@ -24,7 +28,7 @@ int main(int argc, char** argv) {
   const int count = argc > 1 ? std::atoi(argv[1]) : 12;
   const int only = argc > 2 ? std::atoi(argv[2]) : -1;
   const std::string posture = argc > 3 ? argv[3] : "prone";
-  int stood = 0, rose = 0;
+  int stood = 0, rose = 0, passed = 0;
   for (int k = 0; k < count; ++k) {
     if (only >= 0 && k != only) continue;
     const double height = 1.6 + 0.05 * (k % 6), mass = 55 + 7 * (k % 7);
@@ -75,6 +79,20 @@ int main(int argc, char** argv) {
       if (name != "settle") std::printf(" %s %d/%.1fs", name.c_str(), time.first, time.second);
     }
     std::printf("\n");
+    const rise::QualityOptions options = rise::QualityOptionsFor(clip.clip);
+    const rise::QualityReport quality = rise::MeasureClip(clip.clip, options);
+    passed += quality.passed;
+    for (const rise::EffectorSlip& slip : quality.slips) {
+      if (slip.slip < options.maxSlip) continue;
+      std::string spanned, last;
+      for (const rise::TraceSample& sample : clip.trace) {
+        if (sample.time < slip.contactStart || sample.time > slip.contactEnd || sample.move == last) continue;
+        spanned += (spanned.empty() ? "" : " > ") + sample.move;
+        last = sample.move;
+      }
+      std::printf("     %s slid %.3f m over %.2f-%.2f s: %s\n", slip.effector.c_str(), slip.slip, slip.contactStart,
+                  slip.contactEnd, spanned.c_str());
+    }
   }
-  std::printf("stood %d, reached the rise %d\n", stood, rose);
+  std::printf("stood %d, reached the rise %d, passed every bar %d\n", stood, rose, passed);
 }
