@@ -874,7 +874,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   // Crouched on both feet with the CoM over them: Phase 2 directly.
   if (OnItsFeet(r)) return PlanRise(r);
   // From rest (the start, or after a fall) a roll starts afresh.
-  if (phase_ == RisePhase::kSettle) rollSign_ = 0.0f, rollStage_ = RollStage::kNone, rollMoves_ = 0, logRoll_ = false;
+  if (phase_ == RisePhase::kSettle) rollSign_ = 0.0f, rollStage_ = RollStage::kNone, rollMoves_ = 0;
   const glm::vec3 face = chest * glm::vec3(0, 0, 1);
   // Face down already: Phase 0 goes straight to placing hands and feet.
   if (rollSign_ == 0.0f && glm::dot(face, ground_.normal) < -0.7f) return PlanPlace(r);
@@ -919,15 +919,6 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   const bool pushedOff = pelvisRoll > kLiftOffRoll && !r.touching[far];
   if (stage == RollStage::kPush && pushedOff) stage = RollStage::kOver;
   rollStage_ = stage;
-  // From the back the body rolls over the near arm kept along its side, as a
-  // log roll. Overhead, that arm ended out to the side with its hand on the
-  // ground, and the shoulder (no twist) cannot bend the forearm up off it
-  // there: the hand was dragged 50-75 cm as the arm came in. Alongside,
-  // bench/prone_variants 36 supine at 30 s: 17 stand (8 overhead), the worst
-  // hand slide 14-31 cm. From a side the arm lies in front already and goes
-  // overhead as before (alongside, 5 and 2 of 24 stood against 9 and 13).
-  if (stage == RollStage::kTuck && firstMove) logRoll_ = true;
-  const std::array<float, 5> nearArmAlongside{0, 0, 10, 0, 0};
 
   heading_ = HeadingForward(r);
   Move move;
@@ -939,9 +930,12 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
     m.lift = static_cast<float>(spec_.style.stepHeightM);
     return m;
   };
-  // From a side the arm on the roll side goes overhead so the body rolls
-  // over the shoulder instead of onto the arm.
-  set(nearArm, RollLimb(r, nearArm, logRoll_ ? nearArmAlongside : std::array<float, 5>{165, 15, 10, 0, 0}));
+  // The arm on the roll side goes overhead so the body rolls over the
+  // shoulder instead of onto the arm. (From the back it was kept along the
+  // side, a log roll, while the arm-out move dragged an overhead hand 50-75 cm;
+  // since that move ends with the arm straight, alongside stood fewer:
+  // bench/prone_variants-style harness, 48 supine at 30 s, 36 against 45.)
+  set(nearArm, RollLimb(r, nearArm, {165, 15, 10, 0, 0}));
   set(nearLeg, RollLimb(r, nearLeg, {5, 0, 5, -20, 0}));
   switch (stage) {
     case RollStage::kTuck: {
@@ -961,7 +955,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       // way, so the heel sweeps well below the ankle: twice a step's lift.
       foot.lift = 2.0f * static_cast<float>(spec_.style.stepHeightM);
       set(farLeg, foot);
-      set(nearArm, RollLimb(r, nearArm, logRoll_ ? nearArmAlongside : std::array<float, 5>{90, 20, 10, 0, 0}));
+      set(nearArm, RollLimb(r, nearArm, {90, 20, 10, 0, 0}));
       set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
       break;
     }
@@ -1008,7 +1002,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       move.duration = 0.6;
       move.to = RolledTrunk(r, 0.0f, 0.0f);
       set(farArm, swing(farArm, {20, 20, 60, 0, 0}));
-      set(nearArm, logRoll_ ? RollLimb(r, nearArm, nearArmAlongside) : swing(nearArm, {165, 60, 10, 0, 0}));
+      set(nearArm, swing(nearArm, {165, 60, 10, 0, 0}));
       set(nearLeg, RollLimb(r, nearLeg, {0, 0, 90, -50, 0}));
       set(farLeg, RollLimb(r, farLeg, {0, 0, 90, -50, 0}));
       break;
@@ -1021,12 +1015,14 @@ std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading
   // beside the chest it sweeps through the ground, and ended folded under the
   // shoulder with the elbow down and the hand up: the shoulder rested on it,
   // the trunk stayed tilted 30 deg, and that hand never reached the ground.
-  // So it first comes round at the shoulder's height, out to the side with the
-  // elbow bent and up, as a body lying prone draws an arm in. (Of the elbow-up
-  // poses tried, flexion -30, abduction 80, elbow 90 deg stood the most rolled
-  // starts. bench/prone_variants 200, supine/side_left/side_right, 30 s: 50,
-  // 63 and 78 stand; 0 of each without this move. Measured before supine
-  // starts took the log roll, which leaves no arm overhead.)
+  // So it first comes round at the shoulder's height, out to the side and
+  // angled toward the hips, straight (0 of 200 rolled starts stood without this
+  // move). The elbow-up pose used before (flexion -30, abduction 80, elbow
+  // 90 deg) stood fewer: side_left/side_right 48 each at 30 s, 41 and 37
+  // against 47 and 48 straight. Elbow-up poses with more flexion (90-120 deg)
+  // stood none. The hand still drags here, 45-55 cm at most: abducting to
+  // 80 deg first, or bending the elbow overhead to lift the hand, did not
+  // shorten that (the shoulder has no twist to lift a hand lying out to the side).
   Move move;
   move.name = "arm out";
   move.phase = RisePhase::kRoll;
@@ -1037,7 +1033,7 @@ std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading
     const Limb limb = static_cast<Limb>(i);
     move.limbs[i] = HoldLimb(r, limb, false);
     if (!IsArm(limb)) continue;
-    const LimbMove out = RollLimb(r, limb, {-30, 80, 90, 0, 0});
+    const LimbMove out = RollLimb(r, limb, {-55, 80, 0, 0, 0});
     if (out.from.x > kOverheadArm) move.limbs[i] = out, any = true;
   }
   if (!any) return std::nullopt;

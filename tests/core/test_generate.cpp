@@ -454,7 +454,9 @@ TEST_CASE("roll: a far leg left straight or in the air is tucked before it pushe
   // Stress-runner starts (issue 8; seeds 11, 102, 173) whose rolls fell back
   // with the pushing leg straight or its foot off the ground: the push off was
   // repeated until the roll's moves ran out, a retry, and the place phase came
-  // at 17.1, 25.4 and 17.6 s. Tucked again first, each is placed by 9.1 s.
+  // at 17.1, 25.4 and 17.6 s. Tucked again first, each is placed without a
+  // retry: by 9.1 s while the back rolled over an arm kept alongside, by
+  // 12.0 s over the arm put overhead (which is brought out first, 1-1.6 s).
   const char* starts[] = {
       R"({"character":{"height_m":1.516,"mass_kg":109.608},"seed":11,"start":{"drop_height_m":0.241,"joints_deg":{"abdomen":[1.462,9.931,-26.477],"chest":[-2.961,15.765,11.927],"foot_l":[-23.057,7.182],"foot_r":[-1.333,2.281],"forearm_l":[59.152],"forearm_r":[126.975],"hand_l":[-31.384,-17.624],"hand_r":[71.354,-18.479],"head":[8.309,29.754,-31.969],"shin_l":[129.215],"shin_r":[13.179],"thigh_l":[110.192,30.857],"thigh_r":[34.83,-29.3],"upper_arm_l":[-37.321,67.338],"upper_arm_r":[26.173,-29.63]},"posture":"custom","root_euler_deg":[112.479,140.071,149.28]},"style":{"look_around":0.412,"speed":1.607,"stance_width_m":0.124,"step_height_m":0.3,"sway":0.973,"tiredness":0.66},"terrain":{"friction":0.517,"slope_deg":3.049}})",
       R"({"character":{"height_m":1.836,"mass_kg":129.932},"seed":102,"start":{"drop_height_m":0.403,"joints_deg":{"abdomen":[35.904,6.48,-18.487],"chest":[19.766,-17.016,7.172],"foot_l":[-10.63,20.4],"foot_r":[-48.668,-17.686],"forearm_l":[88.151],"forearm_r":[130.777],"hand_l":[69.972,13.293],"hand_r":[-60.761,5.907],"head":[-47.826,-2.911,52.93],"shin_l":[102.456],"shin_r":[127.07],"thigh_l":[-17.188,-29.746],"thigh_r":[72.915,41.842],"upper_arm_l":[-23.837,51.029],"upper_arm_r":[-0.542,74.568]},"posture":"custom","root_euler_deg":[-41.617,-40.508,122.689]},"style":{"look_around":0.594,"speed":2.029,"stance_width_m":0.234,"step_height_m":0.291,"sway":0.017,"tiredness":0.719},"terrain":{"friction":1.186,"slope_deg":1.972}})",
@@ -464,20 +466,25 @@ TEST_CASE("roll: a far leg left straight or in the air is tucked before it pushe
     REQUIRE(spec.IsOk());
     rise::RiseSpec s = spec.Value();
     INFO("seed " << s.seed);
-    s.maxDurationS = 12.0;
+    s.maxDurationS = 14.0;
     rise::GenerateSettings settings;
     settings.keepTrace = true;
     const rise::GeneratedClip result = rise::GenerateClip(s, settings);
     REQUIRE(result.health.ok);
     double placeTime = -1.0;
+    bool retried = false;  // back to settle once the roll had begun
+    bool rolling = false;
     for (const auto& sample : result.trace) {
       if (sample.phase == rise::RisePhase::kPlace) {
         placeTime = sample.time;
         break;
       }
+      rolling = rolling || sample.phase == rise::RisePhase::kRoll;
+      retried = retried || (rolling && sample.phase == rise::RisePhase::kSettle);
     }
+    CHECK_FALSE(retried);
     CHECK(placeTime > 0.0);
-    CHECK(placeTime < 10.0);
+    CHECK(placeTime < 12.5);
   }
 }
 
