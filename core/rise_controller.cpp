@@ -86,6 +86,12 @@ constexpr float kPlantedWristGain = 0.15f;
 // 11, 14 and 5 of 36 prone starts stood).
 constexpr float kCrawlHalfStance = 0.12f;  // m
 constexpr int kMaxRetries = 4;
+// The fastest pace of the moves that balance the body on its hands and feet
+// or its feet (push, crawl, rise, stand): the paper's quasi-static balance.
+// Faster, the CoM overran the support: prone starts at speed 3 stood 29 of 72
+// (2: 66), capped here 72 of 72 (69 pass every bar; uncapped 1.5: 72, 70).
+// The roll and the placing of hands and feet keep the style's full pace.
+constexpr double kMaxBalancedPace = 1.5;
 constexpr float kMaxLimbSpeed = 1.5f;  // m/s, average along a swing
 // Phase 2's balance feedback: how far the pose's CoM goal moves against the
 // capture point's offset from the feet centre.
@@ -755,7 +761,11 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
 // Planning
 
 void RiseController::StartMove(Move move) {
-  move.duration /= std::max(0.25, spec_.style.speed) * (1.0 - 0.4 * spec_.style.tiredness);
+  double pace = std::max(0.25, spec_.style.speed) * (1.0 - 0.4 * spec_.style.tiredness);
+  if (OnHandsAndFeet(move.phase) || move.phase == RisePhase::kRise || move.phase == RisePhase::kStand) {
+    pace = std::min(pace, kMaxBalancedPace);
+  }
+  move.duration /= pace;
   // However fast the style, a hand or foot crossing the world goes no faster
   // on average than kMaxLimbSpeed (the eased path peaks at about twice that):
   // a quick style on a long step otherwise whipped limbs past 10 m/s.
