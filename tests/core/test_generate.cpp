@@ -303,13 +303,14 @@ TEST_CASE("a clip that stands ends on a still, neutral stand an engine can blend
   CHECK(glm::degrees(std::acos(std::min(1.0f, up.y))) < 10.0f);
 }
 
-// Starts on the back and on either side: the roll turns the body prone (from
-// a side, the arm it rolled over then comes out from overhead), then the same place, push, crawl
+// Starts on the back and on either side: the roll turns the body prone (the
+// arm it rolled over then comes out from overhead), then the same place, push, crawl
 // and rise as the prone starts. (Their bear stance is longer than a prone
 // start's, so the foot steps hold the CoM where it is when FootLiftCom would
 // take the held foot out of reach.) The roll and the arm brought out add about
-// 5 s, so these get 30 s. bench/prone_variants 36 at 30 s: 17 supine, 13
-// side_left, 19 side_right stand (stood at 17-23 s).
+// 5 s, so these get 30 s. bench/prone_variants 36 at 30 s: 35 supine, 36
+// side_left, 35 side_right stand (was 17, 13 and 19 when these were picked;
+// 3 of the 4 stand).
 // (Re-picked from the notes harness when the crawl began holding the shoulders
 // back (session 10): the two supine starts then fell in the rise, while of 108
 // rolled starts as many stood as before, 85 and 84.)
