@@ -162,8 +162,7 @@ float LowestCorner(const BipedDef& def, const BipedPose& pose, const physics::Pl
     if (!joint.hasBox) continue;
     const physics::Transform box = BoxTransform(joint, world[j]);
     for (int corner = 0; corner < 8; ++corner) {
-      const glm::vec3 sign((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f, (corner & 4) ? 1.0f : -1.0f);
-      const glm::vec3 p = box.position + box.rotation * (sign * joint.box.halfExtents);
+      const glm::vec3 p = box.position + box.rotation * (BoneBox::CornerSign(corner) * joint.box.halfExtents);
       lowest = std::min(lowest, glm::dot(plane.normal, p) - plane.offset);
     }
   }

@@ -38,10 +38,7 @@ struct Ground {
 
 glm::vec3 PointAt(const Skeleton& skeleton, const Pose& pose, BodyPoint point) {
   if (point.corner < 0) return pose.positions[point.joint];
-  const BoneBox& box = skeleton.joints[point.joint].box;
-  const glm::vec3 sign((point.corner & 1) ? 1.0f : -1.0f, (point.corner & 2) ? 1.0f : -1.0f,
-                       (point.corner & 4) ? 1.0f : -1.0f);
-  return pose.positions[point.joint] + pose.rotations[point.joint] * (box.center + sign * box.halfExtents);
+  return pose.positions[point.joint] + pose.rotations[point.joint] * skeleton.joints[point.joint].box.Corner(point.corner);
 }
 
 // The points of the given joints: their box corners, or the joints themselves

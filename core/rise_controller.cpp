@@ -1598,8 +1598,7 @@ float RiseController::Clearance(const BodyReading& r, Limb limb) const {
   const BoneBox& box = def_.skeleton.joints[end].box;
   float lowest = 1e9f;
   for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 sign((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f, (corner & 4) ? 1.0f : -1.0f);
-    lowest = std::min(lowest, Height(ground_, r.jointPositions[end] + r.jointRotations[end] * (box.center + sign * box.halfExtents)));
+    lowest = std::min(lowest, Height(ground_, r.jointPositions[end] + r.jointRotations[end] * box.Corner(corner)));
   }
   return lowest;
 }

@@ -103,12 +103,8 @@ glm::vec3 ColourOf(const std::string& jointName) {
   return kTrunk;
 }
 
-glm::vec3 Corner(const BoneBox& box, int corner) {
-  const glm::vec3 sign((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f, (corner & 4) ? 1.0f : -1.0f);
-  return box.center + sign * box.halfExtents;
-}
 
-// One frame's boxes in world space: 8 corners each (Corner() order) and the
+// One frame's boxes in world space: 8 corners each (BoneBox::Corner order) and the
 // world rotation of each box.
 struct PosedBoxes {
   std::vector<std::array<glm::vec3, 8>> corners;
@@ -121,7 +117,7 @@ PosedBoxes Pose(const Clip& clip, const std::vector<DrawBox>& boxes, int frame) 
   PosedBoxes posed;
   for (const DrawBox& box : boxes) {
     std::array<glm::vec3, 8> corners;
-    for (int c = 0; c < 8; ++c) corners[c] = positions[box.joint] + rotations[box.joint] * Corner(box.box, c);
+    for (int c = 0; c < 8; ++c) corners[c] = positions[box.joint] + rotations[box.joint] * box.box.Corner(c);
     posed.corners.push_back(corners);
     posed.rotations.push_back(rotations[box.joint]);
   }

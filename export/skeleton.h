@@ -22,6 +22,14 @@ namespace rise {
 struct BoneBox {
   glm::vec3 center{0.0f};       // box centre in the joint frame, metres
   glm::vec3 halfExtents{0.0f};  // half sizes along the joint frame axes, metres
+
+  // Corner 0-7: bit 0, 1, 2 of the index pick +x, +y, +z. CornerSign is the
+  // corner's direction from the centre (each component +-1); Corner, the
+  // corner in the joint frame.
+  static glm::vec3 CornerSign(int corner) {
+    return {(corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f, (corner & 4) ? 1.0f : -1.0f};
+  }
+  glm::vec3 Corner(int corner) const { return center + CornerSign(corner) * halfExtents; }
 };
 
 struct SkeletonJoint {
