@@ -1030,7 +1030,7 @@ std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading
   // move). The elbow-up pose used before (flexion -30, abduction 80, elbow
   // 90 deg) stood fewer: side_left/side_right 48 each at 30 s, 41 and 37
   // against 47 and 48 straight. Elbow-up poses with more flexion (90-120 deg)
-  // stood none. The hand still drags here, 45-55 cm at most: abducting to
+  // stood none. The hand still drags here, 45-60 cm at most: abducting to
   // 80 deg first, or bending the elbow overhead to lift the hand, did not
   // shorten that (the shoulder has no twist to lift a hand lying out to the side).
   Move move;

@@ -103,7 +103,6 @@ glm::vec3 ColourOf(const std::string& jointName) {
   return kTrunk;
 }
 
-
 // One frame's boxes in world space: 8 corners each (BoneBox::Corner order) and the
 // world rotation of each box.
 struct PosedBoxes {

@@ -455,9 +455,9 @@ TEST_CASE("roll: from the back or a side the body rolls onto its front and the p
   // place within about 6 s of the start (settling included), nothing sunk into
   // the ground, no hand or foot whipped round (stress runs once found them at
   // 10-16 m/s mid-roll), and a foot planted to push the body over not skating
-  // on the ground. (That foot slid 6.2 cm on the supine start once the near
-  // arm stayed alongside for the log roll, which doubled the supine starts
-  // that stand: the bar is 7 cm, over the clip's 5 cm slip bar.)
+  // on the ground. (That foot slid 6.2 cm on the supine start while the back
+  // rolled over a near arm kept alongside, a log roll since dropped: the bar
+  // is 7 cm, over the clip's 5 cm slip bar.)
   for (const RollStart& start : kRollStarts) {
     INFO(std::string(rise::PostureName(start.posture)) << ", " << start.heightM << " m, " << start.massKg << " kg");
     const RollOutcome roll = Roll(start.posture, start.heightM, start.massKg);
