@@ -222,6 +222,7 @@ QualityReport MeasureClip(const Clip& clip, const QualityOptions& options) {
     glm::vec3 drift(0.0f);
     double contactSlip = 0.0, contactStart = 0.0;
     auto closeContact = [&](double end) {
+      if (contactSlip >= options.maxSlip) slip.overBar.push_back({contactStart, end, contactSlip});
       if (slip.contactStart < 0.0 || contactSlip > slip.slip) {
         slip.slip = contactSlip;
         slip.contactStart = contactStart;
@@ -304,6 +305,11 @@ nlohmann::json QualityReport::ToJson() const {
     if (slip.contacts > 0) {
       effectors[slip.effector]["worst_contact"] = {Rounded(slip.contactStart), Rounded(slip.contactEnd)};
     }
+    nlohmann::json overBar = nlohmann::json::array();
+    for (const ContactSlide& contact : slip.overBar) {
+      overBar.push_back({{"start", Rounded(contact.start)}, {"end", Rounded(contact.end)}, {"slip", Rounded(contact.slip)}});
+    }
+    effectors[slip.effector]["over_bar"] = overBar;
   }
   json["slip"] = {
       {"passed", slipOk}, {"max", Rounded(maxSlip)}, {"effector", maxSlipEffector}, {"effectors", effectors}};

@@ -68,6 +68,13 @@ struct QualityOptions {
   double jumpSlack = 0.01;        // metres added to the teleport bound per frame
 };
 
+// One contact of an effector with the ground and how far it slid.
+struct ContactSlide {
+  double start = 0.0;  // seconds
+  double end = 0.0;
+  double slip = 0.0;  // metres
+};
+
 // The worst slide of one effector over the whole clip.
 struct EffectorSlip {
   std::string effector;      // "hand_l", "hand_r", "foot_l", "foot_r"
@@ -75,6 +82,7 @@ struct EffectorSlip {
   double contactStart = -1;  // seconds, the worst contact's span; < 0 when never in contact
   double contactEnd = -1;
   int contacts = 0;  // number of separate contacts
+  std::vector<ContactSlide> overBar;  // every contact that slid maxSlip or more, in time order
 };
 
 struct QualityReport {

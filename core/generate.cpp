@@ -212,6 +212,8 @@ std::string TraceToJsonLines(const std::vector<TraceSample>& trace) {
     for (int i = 0; i < kLimbCount; ++i) {
       nlohmann::json limb;
       limb["target"] = vec(sample.limbTargets[i]);
+      limb["at"] = vec(sample.limbPositions[i]);
+      limb["clearance"] = sample.clearance[i];
       limb["touching"] = sample.touching[i];
       limb["planted"] = sample.planted[i];
       line[LimbName(static_cast<Limb>(i))] = limb;

@@ -1852,6 +1852,10 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
   trace_.com = reading.com;
   trace_.touching = reading.touching;
   trace_.planted = planted_;
+  for (int i = 0; i < kLimbCount; ++i) {
+    trace_.limbPositions[i] = reading.jointPositions[rig_.end[i]];
+    trace_.clearance[i] = Clearance(reading, static_cast<Limb>(i));
+  }
   trace_.support = SupportRegion(reading);
   trace_.feetDistance = FeetRegion(reading).SignedDistance(Ground(reading.com));
 }

@@ -55,6 +55,8 @@ struct TraceSample {
   SupportPolygon support;
   float feetDistance = 0.0f;  // CoM ground projection to the feet's soles, m (negative inside)
   std::array<glm::vec3, kLimbCount> limbTargets{};
+  std::array<glm::vec3, kLimbCount> limbPositions{};  // measured wrist/ankle
+  std::array<float, kLimbCount> clearance{};           // lowest corner of the hand/foot box above the ground, m
   std::array<bool, kLimbCount> touching{};
   std::array<bool, kLimbCount> planted{};
   float trackingError = 0.0f;

@@ -99,6 +99,9 @@ TEST_SUITE("clip_quality") {
     CHECK(SlipOf(report, "foot_r").slip == doctest::Approx(0.10).epsilon(1e-3));
     CHECK(SlipOf(report, "foot_l").contactStart == 0.0);
     CHECK(SlipOf(report, "foot_l").contactEnd == doctest::Approx(1.0));
+    REQUIRE(SlipOf(report, "foot_l").overBar.size() == 1);
+    CHECK(SlipOf(report, "foot_l").overBar[0].slip == doctest::Approx(0.10).epsilon(1e-3));
+    CHECK(SlipOf(report, "foot_l").overBar[0].end == doctest::Approx(1.0));
     CHECK(report.maxSlip == doctest::Approx(0.10).epsilon(1e-3));
     CHECK_FALSE(report.slipOk);
     CHECK(report.jumpOk);
@@ -120,6 +123,7 @@ TEST_SUITE("clip_quality") {
     const rise::EffectorSlip& foot = SlipOf(report, "foot_l");
     CHECK(foot.contacts == 2);
     CHECK(foot.slip == doctest::Approx(0.03).epsilon(1e-3));
+    CHECK(foot.overBar.empty());
     CHECK(report.slipOk);
   }
 
