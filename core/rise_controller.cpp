@@ -566,7 +566,8 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
 void RiseController::EvaluateLimb(const LimbMove& limb, Limb which, float s, const PoseGoal& trunkGoal,
                                   LimbGoal& out) const {
   const float u = Blend(s, limb.delay, limb.span);
-  const glm::quat rotation = glm::slerp(limb.fromRotation, limb.toRotation, u);
+  const float turn = Blend(s, limb.delay + limb.turnDelay * limb.span, (1.0f - limb.turnDelay) * limb.span);
+  const glm::quat rotation = glm::slerp(limb.fromRotation, limb.toRotation, turn);
   switch (limb.mode) {
     case LimbMode::kWorld:
       out.target = limb.lift > 0.0f ? SwingPath{limb.from, limb.to, ground_.normal, limb.lift}.At(u)
@@ -601,6 +602,25 @@ void RiseController::EvaluateLimb(const LimbMove& limb, Limb which, float s, con
       out.target += ground_.normal * (limb.lift * std::min(1.0f, 8.0f * u * (1.0f - u)));
       break;
     }
+  }
+}
+
+void RiseController::ReleaseLiftedHands(const BodyReading& reading) {
+  // Sitting back onto the feet takes the weight off the hands, which the
+  // body then lifts. A planted hand's wrist target is where the wrist was at
+  // the move's start, but the hand has rolled on its fingers since (the wrist
+  // 5-10 cm from it): leaving the ground, the arm swung it back there and
+  // dragged the palm 3-4 cm in its last centimetre above the ground, the
+  // slide that failed 6 of 144 prone starts by 0.1-0.6 cm. Once no corner
+  // presses into the ground, its target is held over where it is.
+  // bench/prone_variants 144 prone, normal / tired: passed every bar 138 ->
+  // 141 and 106 -> 106. (Also while holding still in the squat: tired 101.)
+  for (int i = 0; i < 2; ++i) {
+    LimbMove& m = move_.limbs[i];
+    if (!m.planted || m.mode != LimbMode::kWorld || Clearance(reading, static_cast<Limb>(i)) < 0.0f) continue;
+    glm::vec3 at = reading.jointPositions[rig_.end[i]];
+    at += ground_.normal * glm::dot(m.to - at, ground_.normal);
+    m.from = m.to = at;
   }
 }
 
@@ -761,7 +781,7 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
 // Planning
 
 void RiseController::StartMove(Move move) {
-  double pace = std::max(0.25, spec_.style.speed) * (1.0 - 0.4 * spec_.style.tiredness);
+  double pace = StylePace(spec_.style);
   if (OnHandsAndFeet(move.phase) || move.phase == RisePhase::kRise || move.phase == RisePhase::kStand) {
     pace = std::min(pace, kMaxBalancedPace);
   }
@@ -1116,6 +1136,16 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
     m.to = AnkleForToe(toe, m.toRotation);
     m.lift = static_cast<float>(spec_.style.stepHeightM);
     m.span = 0.7f;
+    // Turned from lying on its instep to its toes while it rose, the foot
+    // brought its toe edge back down to within 1 cm of the ground early in
+    // the swing and scuffed it 5 cm (18 of 144 prone starts at the tired
+    // style's pace 0.61). At full pace the servos' lag holds the turn back;
+    // slower, they track it closely, so the turn waits up to a tenth of the
+    // swing, the full tenth at pace 0.6 and below. bench/prone_variants 144
+    // prone, tired (speed 0.8, tiredness 0.6): passed every bar 95 -> 106,
+    // stood 128 -> 129; at speed 0.5 (72) 47 -> 48 passed, 68 -> 72 stood.
+    // (A tenth at every pace cost 3 of the 144 at full pace.)
+    m.turnDelay = static_cast<float>(0.1 * std::clamp((1.0 - StylePace(spec_.style)) / 0.4, 0.0, 1.0));
   }
   // The hand with the shorter way goes first, with the foot on its side; the
   // other two 0.3 of the move later. Mirrored starts so place in mirrored
@@ -1819,6 +1849,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     }
   }
 
+  if (hasMove_ && (move_.name == "sit back" || move_.name == "heels down")) ReleaseLiftedHands(reading);
   // The pose to track.
   out.local.assign(def_.skeleton.joints.size(), glm::quat(1, 0, 0, 0));
   out.gainScale.assign(def_.skeleton.joints.size(), 1.0f);

@@ -106,6 +106,7 @@ class RiseController {
     glm::quat fromRotation{1.0f, 0.0f, 0.0f, 0.0f}, toRotation{1.0f, 0.0f, 0.0f, 0.0f};
     float lift = 0.0f;               // swing height; 0 keeps the path straight
     float delay = 0.0f, span = 1.0f; // fraction of the move over which the limb travels
+    float turnDelay = 0.0f;          // fraction of the span the end waits before it turns
     bool planted = false;            // a support contact during this move
   };
   struct Move {
@@ -215,6 +216,8 @@ class RiseController {
   // Raises the goal of a hand or foot in a world-space swing that has not yet
   // caught up with its spot, so it comes down only once over it.
   void HoldAloftUntilOver(const Move& move, const BodyReading& reading, PoseGoal& goal) const;
+  // A planted hand that sitting back lifts off the ground goes straight up from where it is.
+  void ReleaseLiftedHands(const BodyReading& reading);
   void StartMove(Move move);
   bool Fallen(const BodyReading& reading) const;
   // Crouched or standing on both feet with the CoM over them (sets the heading).

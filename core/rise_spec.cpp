@@ -22,12 +22,14 @@ const char* PostureName(Posture posture) {
   return "supine";
 }
 
+double StylePace(const StyleSpec& style) { return std::max(0.25, style.speed) * (1.0 - 0.4 * style.tiredness); }
+
 double DefaultMaxDurationS(const RiseSpec& spec) {
   // A prone start stands in about 10-16 s; a roll first adds 5-10 s (rolled
   // starts stood at 16-27 s, so most failed a 20 s limit); a slow style
   // stretches every move by 1 / pace.
   const double base = spec.start.posture == Posture::kProne ? 20.0 : 30.0;
-  const double pace = std::max(0.25, spec.style.speed) * (1.0 - 0.4 * spec.style.tiredness);
+  const double pace = StylePace(spec.style);
   return std::min(120.0, base / std::min(1.0, pace));
 }
 

@@ -58,7 +58,7 @@ struct StyleSpec {
   double stepHeightM = 0.08;  // [0.02, 0.3], how high a hand or foot lifts when it moves
   double stanceWidthM = 0.3;  // [0.1, 0.6], distance between the feet when standing
   double sway = 0.0;          // [0, 1], secondary swaying motion (priority layer)
-  double tiredness = 0.0;     // [0, 1], slower, heavier movement
+  double tiredness = 0.0;     // [0, 1], slows every move (StylePace)
   double lookAround = 0.0;    // [0, 1], head turns during the rise (priority layer)
 };
 
@@ -88,6 +88,9 @@ struct RiseSpec {
   bool maxDurationGiven = false;  // set by the input (or an override), not DefaultMaxDurationS
   OutputSpec output;
 };
+
+// How fast the style moves, 1 the default: speed (at least 0.25) x (1 - 0.4 tiredness).
+double StylePace(const StyleSpec& style);
 
 // max_duration_s when the input leaves it out: 20 s lying prone, 30 s from any
 // other start (the roll), divided by the style's pace (speed x (1 - 0.4
