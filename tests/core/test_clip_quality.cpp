@@ -102,6 +102,10 @@ TEST_SUITE("clip_quality") {
     REQUIRE(SlipOf(report, "foot_l").overBar.size() == 1);
     CHECK(SlipOf(report, "foot_l").overBar[0].slip == doctest::Approx(0.10).epsilon(1e-3));
     CHECK(SlipOf(report, "foot_l").overBar[0].end == doctest::Approx(1.0));
+    const nlohmann::json overBar = report.ToJson()["slip"]["effectors"]["foot_l"]["over_bar"];
+    REQUIRE(overBar.size() == 1u);
+    CHECK(overBar[0]["start"].get<double>() == 0.0);
+    CHECK(overBar[0]["slip"].get<double>() == doctest::Approx(0.10).epsilon(1e-3));
     CHECK(report.maxSlip == doctest::Approx(0.10).epsilon(1e-3));
     CHECK_FALSE(report.slipOk);
     CHECK(report.jumpOk);

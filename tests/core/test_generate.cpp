@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 
 #include "core/clip_check.h"
 #include "core/clip_quality.h"
@@ -549,5 +550,17 @@ TEST_CASE("the trace has one sample per control step") {
   CHECK(result.trace.size() == 241u);  // steps 0..240 at 240 Hz
   const std::string lines = rise::TraceToJsonLines(result.trace);
   CHECK(std::count(lines.begin(), lines.end(), '\n') == 241);
+  // Each hand and foot: its measured wrist/ankle and how far its box is above
+  // the ground. Lying prone at the start the feet rest on the ground.
+  const nlohmann::json last = nlohmann::json::parse(lines.substr(lines.rfind('\n', lines.size() - 2) + 1));
+  for (int i = 0; i < rise::kLimbCount; ++i) {
+    const char* limb = rise::LimbName(static_cast<rise::Limb>(i));
+    INFO(limb);
+    REQUIRE(last[limb]["at"].size() == 3u);
+    const glm::vec3 at(last[limb]["at"][0].get<float>(), last[limb]["at"][1].get<float>(), last[limb]["at"][2].get<float>());
+    CHECK(glm::length(at - result.trace.back().limbPositions[i]) < 1e-5f);
+    CHECK(last[limb]["clearance"].get<float>() < at.y);
+  }
+  CHECK(std::fabs(result.trace.front().clearance[2]) < 0.01f);
 }
 }
