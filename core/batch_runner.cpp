@@ -111,8 +111,10 @@ Ordered RunClip(const LibraryManifest& manifest, const ManifestClip& clip, const
   Ordered entry = EntryHead(manifest, clip, files, hash);
   skipped = UpToDate(files, hash);
   if (!skipped) {
-    // Files of an older input must not survive next to a failed new one.
+    // Files of an older input must not survive next to a failed new one, nor
+    // the temporaries of a run killed while writing them.
     RemoveOutputFiles(files.all);
+    for (const std::string& file : files.all) RemoveAbandonedTemporaries(file);
     const GeneratedClip generated = GenerateClip(clip.spec);
     if (!generated.health.ok) {
       entry["status"] = "error";
@@ -195,7 +197,9 @@ std::string WriteLibraries(const LibraryManifest& manifest, const std::vector<si
     const std::string file = "library_" + body + ".glb";
     const ManifestClip& first = manifest.clips[clipsOf[body][0]];
     const GltfOptions gltf{ClipOutputOptionsOf(first.spec).naming, false};
-    const std::string error = WriteGltfLibrary(named, (fs::path(options.outDir) / file).string(), gltf);
+    const std::string path = (fs::path(options.outDir) / file).string();
+    RemoveAbandonedTemporaries(path);
+    const std::string error = WriteGltfLibrary(named, path, gltf);
     if (!error.empty()) return error;
     libraries.push_back(Ordered{{"body", body}, {"file", file}, {"clips", names}});
   }
@@ -221,6 +225,7 @@ BatchReport RunBatch(const LibraryManifest& manifest, const std::vector<size_t>&
     entries.push_back(EntryHead(manifest, clip, FilesOf(manifest, clip, options), InputHash(clip.spec)));
   }
   const std::string indexPath = (fs::path(options.outDir) / options.indexName).string();
+  RemoveAbandonedTemporaries(indexPath);
   std::mutex mutex;  // guards entries, report and the index file
   const auto writeIndex = [&](const Ordered* libraries) {
     Count(entries, report);

@@ -611,7 +611,7 @@ void RiseController::ReleaseLiftedHands(const BodyReading& reading) {
   // the move's start, but the hand has rolled on its fingers since (the wrist
   // 5-10 cm from it): leaving the ground, the arm swung it back there and
   // dragged the palm 3-4 cm in its last centimetre above the ground, the
-  // slide that failed 6 of 144 prone starts by 0.1-0.6 cm. Once no corner
+  // slide that failed 5 of 144 prone starts by 0.1-0.6 cm. Once no corner
   // presses into the ground, its target is held over where it is.
   // bench/prone_variants 144 prone, normal / tired: passed every bar 138 ->
   // 141 and 106 -> 106. (Also while holding still in the squat: tired 101.)

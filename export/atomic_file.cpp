@@ -15,6 +15,9 @@
 namespace rise {
 namespace {
 
+// A temporary is the destination's name, this, and mkstemp's six characters.
+constexpr const char* kTemporaryInfix = ".tmp.";
+
 std::string Failure(const std::string& path, const std::string& cause) {
   return "cannot write '" + path + "': " + cause;
 }
@@ -44,11 +47,28 @@ std::string CheckWritable(const std::string& path) {
   return {};
 }
 
+void RemoveAbandonedTemporaries(const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  const std::string prefix = target.filename().string() + kTemporaryInfix;
+  std::error_code ec;
+  std::vector<fs::path> abandoned;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() == prefix.size() + 6 && name.compare(0, prefix.size(), prefix) == 0 &&
+        it->is_regular_file(ec)) {
+      abandoned.push_back(it->path());
+    }
+  }
+  for (const fs::path& file : abandoned) fs::remove(file, ec);
+}
+
 std::string WriteFileAtomically(const std::string& path, std::string_view bytes) {
   if (std::string problem = CheckWritable(path); !problem.empty()) return problem;
 
   // mkstemp picks a name no other writer uses, even for the same destination.
-  std::string tempName = path + ".tmp.XXXXXX";
+  std::string tempName = path + kTemporaryInfix + "XXXXXX";
   std::vector<char> tempPath(tempName.begin(), tempName.end());
   tempPath.push_back('\0');
   const int fd = mkstemp(tempPath.data());

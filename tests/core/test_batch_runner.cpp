@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "core/batch_runner.h"
@@ -126,6 +127,19 @@ TEST_SUITE("batch_runner") {
     CHECK(changed.index["clips"][1] == first.index["clips"][1]);
   }
 
+  TEST_CASE("a rerun after a killed run clears the temporaries it left") {
+    const rise::LibraryManifest manifest = Manifest();
+    const std::string dir = Folder("abandoned");
+    for (const char* name : {"index.json.tmp.k1LLed", "small_side.glb.tmp.k1LLed", "small_side.bvh.tmp.a0b1c2"}) {
+      std::ofstream(fs::path(dir) / name) << "half";
+    }
+    rise::RunBatch(manifest, All(manifest), Options(dir, 1));
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      CAPTURE(entry.path().filename().string());
+      CHECK(entry.path().filename().string().find(".tmp.") == std::string::npos);
+    }
+    CHECK(fs::exists(fs::path(dir) / "small_side.glb"));
+  }
   TEST_CASE("a clip that cannot be written is an error entry with no files, and the others go on") {
     const rise::LibraryManifest manifest = Manifest();
     const rise::BatchOptions options = Options(Folder("write_error"), 2);

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <algorithm>
 
 #include "export/atomic_file.h"
 #include "export/biped_fixture.h"
@@ -13,6 +14,19 @@ TEST_SUITE("atomic_file") {
     REQUIRE(rise::WriteFileAtomically(path, "second").empty());
     CHECK(rise::test::FileContents(path) == "second");
     CHECK(folder.Files() == std::vector<std::string>{"clip.glb"});
+  }
+  TEST_CASE("the temporaries a killed writer left are removed, and nothing else") {
+    rise::test::TempFolder folder;
+    for (const char* name : {"clip.glb", "clip.glb.tmp.Ab3xQ9", "clip.glb.tmp.zz0000", "clip.glb.tmp.short",
+                             "other.glb.tmp.Ab3xQ9", "clip.glb.tmp.Ab3xQ9.keep"}) {
+      REQUIRE(rise::WriteFileAtomically(folder.File(name), "x").empty());
+    }
+    std::filesystem::create_directory(folder.Path() / "clip.glb.tmp.folder");
+    rise::RemoveAbandonedTemporaries(folder.File("clip.glb"));
+    std::vector<std::string> left = folder.Files();
+    std::sort(left.begin(), left.end());
+    CHECK(left == std::vector<std::string>{"clip.glb", "clip.glb.tmp.Ab3xQ9.keep", "clip.glb.tmp.folder",
+                                                     "clip.glb.tmp.short", "other.glb.tmp.Ab3xQ9"});
   }
   TEST_CASE("a missing folder gives a clear error and creates nothing") {
     rise::test::TempFolder folder;
