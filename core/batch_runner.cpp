@@ -111,10 +111,8 @@ Ordered RunClip(const LibraryManifest& manifest, const ManifestClip& clip, const
   Ordered entry = EntryHead(manifest, clip, files, hash);
   skipped = UpToDate(files, hash);
   if (!skipped) {
-    // Files of an older input must not survive next to a failed new one, nor
-    // the temporaries of a run killed while writing them.
+    // Files of an older input must not survive next to a failed new one.
     RemoveOutputFiles(files.all);
-    for (const std::string& file : files.all) RemoveAbandonedTemporaries(file);
     const GeneratedClip generated = GenerateClip(clip.spec);
     if (!generated.health.ok) {
       entry["status"] = "error";
@@ -170,6 +168,8 @@ Ordered IndexDocument(const LibraryManifest& manifest, const BatchOptions& optio
   return index;
 }
 
+std::string LibraryFileName(const std::string& body) { return "library_" + body + ".glb"; }
+
 // One library_<body>.glb per body, from the clips on disk; "" or the first write error.
 std::string WriteLibraries(const LibraryManifest& manifest, const std::vector<size_t>& selection,
                            const std::vector<Ordered>& entries, const BatchOptions& options, Ordered& libraries) {
@@ -194,12 +194,10 @@ std::string WriteLibraries(const LibraryManifest& manifest, const std::vector<si
       named.push_back({clip.name, &clips[c]});
       names.push_back(clip.name);
     }
-    const std::string file = "library_" + body + ".glb";
+    const std::string file = LibraryFileName(body);
     const ManifestClip& first = manifest.clips[clipsOf[body][0]];
     const GltfOptions gltf{ClipOutputOptionsOf(first.spec).naming, false};
-    const std::string path = (fs::path(options.outDir) / file).string();
-    RemoveAbandonedTemporaries(path);
-    const std::string error = WriteGltfLibrary(named, path, gltf);
+    const std::string error = WriteGltfLibrary(named, (fs::path(options.outDir) / file).string(), gltf);
     if (!error.empty()) return error;
     libraries.push_back(Ordered{{"body", body}, {"file", file}, {"clips", names}});
   }
@@ -219,13 +217,18 @@ BatchReport RunBatch(const LibraryManifest& manifest, const std::vector<size_t>&
                      const BatchOptions& options) {
   BatchReport report;
   report.progress.total = static_cast<int>(selection.size());
+  const std::string indexPath = (fs::path(options.outDir) / options.indexName).string();
+  // Every file this run writes; the temporaries a killed run left of them go first.
+  std::vector<std::string> outputs{indexPath};
   std::vector<Ordered> entries;
   for (size_t i : selection) {
     const ManifestClip& clip = manifest.clips[i];
-    entries.push_back(EntryHead(manifest, clip, FilesOf(manifest, clip, options), InputHash(clip.spec)));
+    const ClipFiles files = FilesOf(manifest, clip, options);
+    entries.push_back(EntryHead(manifest, clip, files, InputHash(clip.spec)));
+    outputs.insert(outputs.end(), files.all.begin(), files.all.end());
+    if (options.libraryGlb) outputs.push_back((fs::path(options.outDir) / LibraryFileName(clip.body)).string());
   }
-  const std::string indexPath = (fs::path(options.outDir) / options.indexName).string();
-  RemoveAbandonedTemporaries(indexPath);
+  RemoveAbandonedTemporaries(outputs);
   std::mutex mutex;  // guards entries, report and the index file
   const auto writeIndex = [&](const Ordered* libraries) {
     Count(entries, report);

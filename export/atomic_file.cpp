@@ -10,6 +10,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <map>
+#include <set>
 #include <vector>
 
 namespace rise {
@@ -47,21 +49,25 @@ std::string CheckWritable(const std::string& path) {
   return {};
 }
 
-void RemoveAbandonedTemporaries(const std::string& path) {
+void RemoveAbandonedTemporaries(const std::vector<std::string>& paths) {
   namespace fs = std::filesystem;
-  const fs::path target(path);
-  const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  const std::string prefix = target.filename().string() + kTemporaryInfix;
-  std::error_code ec;
-  std::vector<fs::path> abandoned;
-  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (name.size() == prefix.size() + 6 && name.compare(0, prefix.size(), prefix) == 0 &&
-        it->is_regular_file(ec)) {
-      abandoned.push_back(it->path());
-    }
+  std::map<fs::path, std::set<std::string>> prefixesIn;  // folder -> "<file name>.tmp."
+  for (const std::string& path : paths) {
+    const fs::path target(path);
+    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    prefixesIn[folder].insert(target.filename().string() + kTemporaryInfix);
   }
-  for (const fs::path& file : abandoned) fs::remove(file, ec);
+  constexpr size_t kUniqueChars = 6;  // mkstemp's XXXXXX
+  std::error_code ec;
+  for (const auto& [folder, prefixes] : prefixesIn) {
+    std::vector<fs::path> abandoned;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      if (name.size() <= kUniqueChars || !prefixes.count(name.substr(0, name.size() - kUniqueChars))) continue;
+      if (it->is_regular_file(ec)) abandoned.push_back(it->path());
+    }
+    for (const fs::path& file : abandoned) fs::remove(file, ec);
+  }
 }
 
 std::string WriteFileAtomically(const std::string& path, std::string_view bytes) {

@@ -7,6 +7,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace rise {
 
@@ -16,10 +17,11 @@ namespace rise {
 // temporary nor a partial `path`; an existing `path` is left untouched.
 std::string WriteFileAtomically(const std::string& path, std::string_view bytes);
 
-// Removes the temporaries of `path` a writer killed mid-write left in its folder (regular files
-// named `<file name>.tmp.` plus mkstemp's six characters). Only for a path no other process is
-// writing at the same time: its temporary would go too, and its rename fail.
-void RemoveAbandonedTemporaries(const std::string& path);
+// Removes the temporaries of `paths` that writers killed mid-write left in their folders
+// (regular files named `<file name>.tmp.` plus mkstemp's six characters), reading each folder
+// once. Only for paths no other process is writing at the same time: its temporary would go
+// too, and its rename fail.
+void RemoveAbandonedTemporaries(const std::vector<std::string>& paths);
 
 // Why `path` cannot be written ("" when, as far as can be told before writing, it can), in the
 // words of WriteFileAtomically's messages: the path is empty or names a folder, its folder is

@@ -130,15 +130,19 @@ TEST_SUITE("batch_runner") {
   TEST_CASE("a rerun after a killed run clears the temporaries it left") {
     const rise::LibraryManifest manifest = Manifest();
     const std::string dir = Folder("abandoned");
-    for (const char* name : {"index.json.tmp.k1LLed", "small_side.glb.tmp.k1LLed", "small_side.bvh.tmp.a0b1c2"}) {
+    for (const char* name : {"index.json.tmp.k1LLed", "small_side.glb.tmp.k1LLed", "small_side.bvh.tmp.a0b1c2",
+                             "library_small.glb.tmp.Zz9Zz9"}) {
       std::ofstream(fs::path(dir) / name) << "half";
     }
-    rise::RunBatch(manifest, All(manifest), Options(dir, 1));
+    rise::BatchOptions options = Options(dir, 1);
+    options.libraryGlb = true;
+    rise::RunBatch(manifest, All(manifest), options);
     for (const auto& entry : fs::directory_iterator(dir)) {
       CAPTURE(entry.path().filename().string());
       CHECK(entry.path().filename().string().find(".tmp.") == std::string::npos);
     }
     CHECK(fs::exists(fs::path(dir) / "small_side.glb"));
+    CHECK(fs::exists(fs::path(dir) / "library_small.glb"));
   }
   TEST_CASE("a clip that cannot be written is an error entry with no files, and the others go on") {
     const rise::LibraryManifest manifest = Manifest();

@@ -22,7 +22,7 @@ TEST_SUITE("atomic_file") {
       REQUIRE(rise::WriteFileAtomically(folder.File(name), "x").empty());
     }
     std::filesystem::create_directory(folder.Path() / "clip.glb.tmp.folder");
-    rise::RemoveAbandonedTemporaries(folder.File("clip.glb"));
+    rise::RemoveAbandonedTemporaries({folder.File("clip.glb")});
     std::vector<std::string> left = folder.Files();
     std::sort(left.begin(), left.end());
     CHECK(left == std::vector<std::string>{"clip.glb", "clip.glb.tmp.Ab3xQ9.keep", "clip.glb.tmp.folder",
