@@ -124,8 +124,17 @@ glm::quat BipedDef::JointFrame(int joint) const {
 
 void BipedDef::JointAngles(int joint, const glm::quat& local, float* anglesDeg) const {
   const glm::quat frame = JointFrame(joint);
+  const glm::mat3 r = glm::mat3_cast(glm::conjugate(frame) * local * frame);
+  if (bones[joint].kind == JointKind::kUniversal) {
+    // As the engine measures it (physics/joint_universal.cpp): each angle in
+    // (-180, 180], so a shoulder abducted past 90 deg reads as it is, where the
+    // Euler extraction below folds it back with a half turn of twist.
+    anglesDeg[0] = glm::degrees(std::atan2(r[2].x, r[2].z));
+    anglesDeg[1] = glm::degrees(std::atan2(r[0].y, r[1].y));
+    return;
+  }
   float ay = 0.0f, az = 0.0f, ax = 0.0f;
-  glm::extractEulerAngleYZX(glm::mat4_cast(glm::conjugate(frame) * local * frame), ay, az, ax);
+  glm::extractEulerAngleYZX(glm::mat4(r), ay, az, ax);
   // F's z axis is the second DOF axis or its opposite (a ball joint's frame is right-handed
   // whichever way its DOF axes point).
   const float zSign =
@@ -134,10 +143,6 @@ void BipedDef::JointAngles(int joint, const glm::quat& local, float* anglesDeg) 
   switch (bones[joint].kind) {
     case JointKind::kHinge:
       anglesDeg[0] = yzx[2];
-      break;
-    case JointKind::kUniversal:
-      anglesDeg[0] = yzx[0];
-      anglesDeg[1] = yzx[1];
       break;
     case JointKind::kBall:
       for (int i = 0; i < 3; ++i) anglesDeg[i] = yzx[i];
@@ -280,7 +285,7 @@ BipedDef MakeBipedDef(float heightM, float massKg, const SegmentOverrides& overr
     add("upper_arm" + s, "chest", {sign * shoulderX, (1.0f - kShoulderBelowNeck) * chest.length, 0}, &upper,
         {0, -0.5f * upper.length, 0},
         joint(JointKind::kUniversal, TorquePerKg::kShoulder,
-              {Dof("flexion", -kX, -60, 170), Dof("abduction", Side(left, kZ), -30, 80)}));
+              {Dof("flexion", -kX, -60, 170), Dof("abduction", Side(left, kZ), -30, 100)}));
     add("forearm" + s, "upper_arm" + s, {0, -upper.length, 0}, &fore, {0, -0.5f * fore.length, 0},
         joint(JointKind::kHinge, TorquePerKg::kElbow, {Dof("flexion", -kX, 0, 150)}));
     add("hand" + s, "forearm" + s, {0, -fore.length, 0}, &hand, {0, -0.5f * hand.length, 0},

@@ -139,11 +139,14 @@ BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseG
     // distance only depends on the hinge angle (law of cosines).
     const BodyRig::Axis& hinge = rig.hinge[i];
     const float cosHinge = (distance * distance - l1 * l1 - l2 * l2) / (2.0f * l1 * l2);
-    const float bend = std::clamp(std::acos(std::clamp(cosHinge, -1.0f, 1.0f)), hinge.lower, hinge.upper);
+    const float bend = limbGoal.angles ? limbGoal.angles->z
+                                       : std::clamp(std::acos(std::clamp(cosHinge, -1.0f, 1.0f)), hinge.lower, hinge.upper);
     const glm::quat hingeRotation = glm::angleAxis(bend, hinge.axis);
     const glm::vec3 limbVector = upperBone + hingeRotation * lowerBone;
     const glm::vec3 toward = distance > 1e-6f ? reach / distance : glm::normalize(limbVector);
-    const glm::vec2 rootAngles = SolveTwoAxes(rig.rootDofs[i][0], rig.rootDofs[i][1], glm::normalize(limbVector), toward);
+    const glm::vec2 rootAngles = limbGoal.angles ? glm::vec2(limbGoal.angles->x, limbGoal.angles->y)
+                                                 : SolveTwoAxes(rig.rootDofs[i][0], rig.rootDofs[i][1],
+                                                                glm::normalize(limbVector), toward);
     const glm::quat rootRotation =
         glm::angleAxis(rootAngles.x, rig.rootDofs[i][0].axis) * glm::angleAxis(rootAngles.y, rig.rootDofs[i][1].axis);
     pose.worldRotations[rig.upper[i]] = glm::normalize(parent * rootRotation);

@@ -22,6 +22,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace rise {
@@ -33,6 +34,10 @@ const char* LimbName(Limb limb);  // "hand_l", "hand_r", "foot_l", "foot_r"
 struct LimbGoal {
   glm::vec3 target{0.0f};                           // wrist or ankle joint position, world
   glm::quat endRotation{1.0f, 0.0f, 0.0f, 0.0f};    // hand or foot world rotation (its key direction counts)
+  // When set, the limb takes these angles (root axis 0, root axis 1, hinge; radians) as they are
+  // and `target` is only where they put the wrist or ankle: at 90 deg of shoulder abduction the
+  // target no longer tells how the arm is turned about itself.
+  std::optional<glm::vec3> angles;
 };
 
 struct PoseGoal {

@@ -154,6 +154,8 @@ constexpr float kChestOverRoll = glm::radians(125.0f);
 constexpr float kProneRoll = glm::radians(135.0f);
 // Shoulder flexion past which an arm lies overhead.
 constexpr float kOverheadArm = glm::radians(60.0f);
+// Shoulder abduction past which an arm is out to the side (turned there by the arm out).
+constexpr float kArmOutAbduction = glm::radians(70.0f);
 // A roll takes 5 moves (tuck, push off, over, lie, arm out) and a few more
 // when one leaves the body short.
 constexpr int kMaxRollMoves = 12;
@@ -568,6 +570,7 @@ void RiseController::EvaluateLimb(const LimbMove& limb, Limb which, float s, con
   const float u = Blend(s, limb.delay, limb.span);
   const float turn = Blend(s, limb.delay + limb.turnDelay * limb.span, (1.0f - limb.turnDelay) * limb.span);
   const glm::quat rotation = glm::slerp(limb.fromRotation, limb.toRotation, turn);
+  out.angles.reset();
   switch (limb.mode) {
     case LimbMode::kWorld:
       out.target = limb.lift > 0.0f ? SwingPath{limb.from, limb.to, ground_.normal, limb.lift}.At(u)
@@ -598,8 +601,10 @@ void RiseController::EvaluateLimb(const LimbMove& limb, Limb which, float s, con
                    lower * def_.skeleton.joints[rig_.end[i]].restOffset;
       out.endRotation = glm::normalize(lower * rotation);
       // The lift rises early and holds, so a limb leaves the ground before the
-      // swing has carried it far along it.
+      // swing has carried it far along it; the IK then finds the angles that
+      // raise it. Without one the angles are the goal as they are.
       out.target += ground_.normal * (limb.lift * std::min(1.0f, 8.0f * u * (1.0f - u)));
+      if (limb.lift <= 0.0f) out.angles = angles;
       break;
     }
   }
@@ -862,7 +867,12 @@ void RiseController::PlanNext(const BodyReading& reading) {
 float RiseController::RollAngle(const glm::quat& segment) const {
   const glm::vec3 front = segment * glm::vec3(0, 0, 1);
   const glm::vec3 side = rollSign_ * (segment * glm::vec3(1, 0, 0));
-  return std::atan2(-glm::dot(side, ground_.normal), glm::dot(front, ground_.normal));
+  const float angle = std::atan2(-glm::dot(side, ground_.normal), glm::dot(front, ground_.normal));
+  // Face down a little past flat reads as turned on past pi, not as -pi (on
+  // the back the other way round): an arm lifted out to the side tipped a
+  // prone chest a few degrees on, and the roll flipped to the other side and
+  // began again from "over".
+  return angle < -0.5f * kPi ? angle + 2.0f * kPi : angle;
 }
 
 RiseController::LimbMove RiseController::RollLimb(const BodyReading& r, Limb limb,
@@ -923,11 +933,12 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   const bool prone = std::min(pelvisRoll, chestRoll) > kProneRoll;
   // Lying on the front with the legs straightened: an arm left overhead comes
   // out to the side, then the prone path takes over.
-  if (rollStage_ == RollStage::kLie && prone) {
-    rollStage_ = RollStage::kArmOut;
-    if (std::optional<Move> armOut = PlanArmOut(r)) return *armOut;
+  for (const RollStage from : {RollStage::kLie, RollStage::kArmOut}) {
+    if (rollStage_ != from || !prone) continue;
+    rollStage_ = from == RollStage::kLie ? RollStage::kArmOut : RollStage::kArmTurn;
+    if (std::optional<Move> armOut = PlanArmOut(r, rollStage_)) return *armOut;
   }
-  if (rollStage_ == RollStage::kArmOut && prone) return PlanPlace(r);
+  if (rollStage_ == RollStage::kArmTurn && prone) return PlanPlace(r);
 
   const Limb nearArm = rollSign_ > 0.0f ? Limb::kHandLeft : Limb::kHandRight;
   const Limb farArm = OtherHand(nearArm);
@@ -1015,23 +1026,28 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       move.duration = 0.9;
       const bool pushing = planted_[static_cast<int>(farLeg)];
       move.to = RolledTrunk(r, 0.0f, glm::radians(pushing ? 65.0f : 30.0f));
-      set(farArm, swing(farArm, {45, 45, 90, 0, 0}));
+      set(farArm, swing(farArm, {0, 10, 10, 0, 0}));
       set(farLeg, pushing ? HoldLimb(r, farLeg, true) : swing(farLeg, {40, -10, 60, -20, 0}));
       break;
     }
     case RollStage::kLie:
     case RollStage::kArmOut:
+    case RollStage::kArmTurn:
     case RollStage::kNone:
       // The hips straighten and the spine untwists: straightening the top leg
       // turns the pelvis after the chest onto the front, as a body lying prone.
       // The knees bend, feet up: straightened along the ground, the legs
       // dragged their toes 10-12 cm (27 feet in 36 supine starts; the place swings
       // the feet down to their spots next). The arm overhead swings out along
-      // the ground, nearer to where the hands are placed next.
+      // the ground, nearer to where the hands are placed next. The far arm
+      // lies alongside: bent under the chest (flexion 20, abduction 20,
+      // elbow 60 deg) its hand propped that side 28 deg up, so the near arm
+      // out at the side pointed into the ground; 12 supine / 12 side_left
+      // starts stood 0 / 0 of 12 that way, 12 / 12 alongside.
       move.name = "lie";
       move.duration = 0.6;
       move.to = RolledTrunk(r, 0.0f, 0.0f);
-      set(farArm, swing(farArm, {20, 20, 60, 0, 0}));
+      set(farArm, swing(farArm, {0, 10, 10, 0, 0}));
       set(nearArm, swing(nearArm, {165, 60, 10, 0, 0}));
       set(nearLeg, RollLimb(r, nearLeg, {0, 0, 90, -50, 0}));
       set(farLeg, RollLimb(r, farLeg, {0, 0, 90, -50, 0}));
@@ -1040,21 +1056,23 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   return move;
 }
 
-std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading& r) const {
+std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading& r, RollStage stage) const {
   // The arm the body rolled over lies overhead. Swung from there straight to
   // beside the chest it sweeps through the ground, and ended folded under the
   // shoulder with the elbow down and the hand up: the shoulder rested on it,
   // the trunk stayed tilted 30 deg, and that hand never reached the ground.
-  // So it first comes round at the shoulder's height, out to the side and
-  // angled toward the hips, straight (0 of 200 rolled starts stood without this
-  // move). The elbow-up pose used before (flexion -30, abduction 80, elbow
-  // 90 deg) stood fewer: side_left/side_right 48 each at 30 s, 41 and 37
-  // against 47 and 48 straight. Elbow-up poses with more flexion (90-120 deg)
-  // stood none. The hand still drags here, 45-60 cm at most: abducting to
-  // 80 deg first, or bending the elbow overhead to lift the hand, did not
-  // shorten that (the shoulder has no twist to lift a hand lying out to the side).
+  // Swung in the shoulder's two angles from overhead to out at the side and
+  // angled toward the hips (flexion -55, abduction 80), it passed through
+  // the directions in front of the chest, into the ground, and dragged the
+  // hand 41-47 cm (12 supine starts). Lying face down, the arm's way out that
+  // stays above the shoulder's height is round the side: first abducted to
+  // 90 deg (out to the side, the hand rising to the shoulder's height as it
+  // goes), where flexion only turns the arm about itself, then turned there
+  // to the flexion of an arm out to the side and raised behind (the
+  // directions the place then swings down from).
+  const bool turn = stage == RollStage::kArmTurn;
   Move move;
-  move.name = "arm out";
+  move.name = turn ? "arm turn" : "arm out";
   move.phase = RisePhase::kRoll;
   move.duration = 0.8;
   move.from = move.to = MeasuredTrunk(r);
@@ -1063,8 +1081,9 @@ std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading
     const Limb limb = static_cast<Limb>(i);
     move.limbs[i] = HoldLimb(r, limb, false);
     if (!IsArm(limb)) continue;
-    const LimbMove out = RollLimb(r, limb, {-55, 80, 0, 0, 0});
-    if (out.from.x > kOverheadArm) move.limbs[i] = out, any = true;
+    const LimbMove out = RollLimb(r, limb, turn ? std::array<float, 5>{-55, 90, 0, 0, 0} : std::array<float, 5>{170, 90, 0, 0, 0});
+    const bool needed = turn ? out.from.y > kArmOutAbduction && out.from.x > 0.0f : out.from.x > kOverheadArm;
+    if (needed) move.limbs[i] = out, any = true;
   }
   if (!any) return std::nullopt;
   return move;
@@ -1106,7 +1125,7 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
       if (glm::length(pose.worldPositions[rig_.end[i]] - m.to) <= kReachTolerance) break;
     }
     travel[i] = glm::length(m.to - r.jointPositions[rig_.end[i]]);
-    if (move_.name == "arm out" && move_.limbs[i].mode == LimbMode::kJoint) {
+    if ((move_.name == "arm out" || move_.name == "arm turn") && move_.limbs[i].mode == LimbMode::kJoint) {
       // An arm just brought out from overhead is bent elbow-up at the side,
       // where the solution for the wrist's path starts in another branch: the
       // servos snapped the arm across and whipped the hand at 10-12 m/s (33

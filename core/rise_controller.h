@@ -97,7 +97,7 @@ class RiseController {
   };
   enum class LimbMode { kWorld, kToePivot, kBody, kJoint };
   // The roll's moves, in order (see PlanRoll).
-  enum class RollStage { kNone, kTuck, kPush, kOver, kLie, kArmOut };
+  enum class RollStage { kNone, kTuck, kPush, kOver, kLie, kArmOut, kArmTurn };
   struct LimbMove {
     LimbMode mode = LimbMode::kWorld;
     // wrist/ankle (kWorld), toe point (kToePivot), in the trunk frame (kBody), or the
@@ -126,7 +126,7 @@ class RiseController {
   Move PlanRoll(const BodyReading& reading);
   // How far a trunk segment has turned from lying on its back toward lying on
   // its front about its own long axis, rolling toward rollSign_'s side: 0 on the
-  // back, pi/2 on that side, pi on the front.
+  // back, pi/2 on that side, pi on the front; in [-pi/2, 3 pi/2).
   float RollAngle(const glm::quat& segment) const;
   // A limb of a roll pose, set by its joints' angles in degrees (the root's two,
   // the hinge's, the end's two), so it swings along the joints' own arcs.
@@ -134,8 +134,9 @@ class RiseController {
   // The measured trunk turned on by `angle` about its long axis toward the roll
   // side, pivoting on the edge it rolls over, the chest turned `twist` further.
   TrunkPose RolledTrunk(const BodyReading& reading, float angle, float twist) const;
-  // After a roll, an arm lying overhead comes out to the side (none there: nullopt).
-  std::optional<Move> PlanArmOut(const BodyReading& reading) const;
+  // After a roll, an arm lying overhead comes out to the side (kArmOut), then
+  // turns there to be swung down beside the chest (kArmTurn); none to move: nullopt.
+  std::optional<Move> PlanArmOut(const BodyReading& reading, RollStage stage) const;
   Move PlanPlace(const BodyReading& reading);
   Move PlanHandsDown(const BodyReading& reading) const;  // the hands left hovering by the place come straight down
   Move PlanPush(const BodyReading& reading);

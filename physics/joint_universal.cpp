@@ -9,7 +9,8 @@
 //     alpha = atan2(R[2].x, R[2].z),  beta = atan2(R[0].y, R[1].y).
 //   Rates: wB - wA = alpha' a1 + beta' b2 and a1 . b2 = 0, so alpha' = a1 . (wB - wA) and
 //   beta' = b2 . (wB - wA): the limit rows are exact 1-D rows about a1 and b2.
-// Gimbal lock sits at beta = +-90 deg, where b2 x a1 vanishes; keep swingZLimits inside it.
+// At beta = +-90 deg the bone lies along a1, so alpha turns it about itself; the lock keeps
+// |b2 x a1| = 1 and the angles stay defined, so nothing degenerates there.
 // The motor acts about a1 and b2.
 #include "physics/joint.h"
 
