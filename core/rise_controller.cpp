@@ -156,9 +156,9 @@ constexpr float kProneRoll = glm::radians(135.0f);
 constexpr float kOverheadArm = glm::radians(60.0f);
 // Shoulder abduction past which an arm is out to the side (turned there by the arm out).
 constexpr float kArmOutAbduction = glm::radians(70.0f);
-// A roll takes 5 moves (tuck, push off, over, lie, arm out) and a few more
-// when one leaves the body short.
-constexpr int kMaxRollMoves = 12;
+// A roll takes 6 moves (tuck, push off, over, lie, arm out, arm turn) and a
+// few more when one leaves the body short.
+constexpr int kMaxRollMoves = 13;
 
 // On hands and feet: where the plan is quasi-static and the CoM is held by feedback.
 bool OnHandsAndFeet(RisePhase phase) { return phase == RisePhase::kPush || phase == RisePhase::kCrawl; }
