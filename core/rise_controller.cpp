@@ -982,7 +982,10 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
     case RollStage::kTuck: {
       // The far knee comes up and its foot is set flat beside the buttock and
       // out to the side, where pushing on it lifts that hip up and over; the
-      // near arm is on its way overhead.
+      // near arm goes overhead now, before the body turns onto it. (Sent only
+      // to point at the sky here and overhead in the push off, 12 supine
+      // starts slid the near foot 25-27 cm as the pelvis turned over it, the
+      // near hand 19-22 cm as it landed overhead; now 18-19 and 17.)
       move.name = "tuck";
       move.duration = 0.6;
       move.to = move.from;
@@ -996,7 +999,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       // way, so the heel sweeps well below the ankle: twice a step's lift.
       foot.lift = 2.0f * static_cast<float>(spec_.style.stepHeightM);
       set(farLeg, foot);
-      set(nearArm, RollLimb(r, nearArm, {90, 20, 10, 0, 0}));
+      set(nearArm, RollLimb(r, nearArm, {165, 15, 10, 0, 0}));
       set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
       break;
     }
@@ -1019,8 +1022,11 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
       break;
     case RollStage::kOver: {
-      // Past the side: the chest leads over onto the front, the top hand comes
-      // down beside the head. A foot still planted from the push holds the
+      // Past the side: the chest leads over onto the front, the top arm comes
+      // down alongside (brought down beside the head, flexion 45, abduction
+      // 45, elbow 90 deg, its hand slid 14-16 cm as the chest came down onto
+      // the front: 12 of 12 side_left starts; alongside, 4 slid 5-6 cm). A foot
+      // still planted from the push holds the
       // pelvis from falling back, so the chest can lead by the spine's full twist.
       move.name = "over";
       move.duration = 0.9;

@@ -483,8 +483,9 @@ TEST_CASE("metadata: phases tile the clip, contacts name effectors, peak torques
 
 TEST_CASE("roll: from the back or a side the body rolls onto its front and the prone path places and pushes") {
   // The roll's bars: on the front, an arm left overhead drawn out and turned
-  // at the side, and into place within 6.5 s of the start (settling
-  // included; 6.1-6.4 s since the arm's turn), nothing sunk into
+  // at the side, and into place within 7 s of the start (settling
+  // included; 6.1-6.7 s since the arm's turn and the near arm's swing
+  // overhead in the tuck; a retry would cost seconds more), nothing sunk into
   // the ground, no hand or foot whipped round (stress runs once found them at
   // 10-16 m/s mid-roll), and a foot planted to push the body over not skating
   // on the ground. (That foot slid 6.2 cm on the supine start while the back
@@ -494,7 +495,7 @@ TEST_CASE("roll: from the back or a side the body rolls onto its front and the p
     INFO(std::string(rise::PostureName(start.posture)) << ", " << start.heightM << " m, " << start.massKg << " kg");
     const RollOutcome roll = Roll(start.posture, start.heightM, start.massKg);
     CHECK(roll.placeTime > 0.0);
-    CHECK(roll.placeTime < 6.5);
+    CHECK(roll.placeTime < 7.0);
     CHECK(roll.pushed);
     CHECK(roll.penetration <= 0.02);
     CHECK(roll.limbSpeed <= 6.0);
