@@ -137,7 +137,7 @@ Command AddGenerateCommand(CLI::App& app) {
   sub->add_option("input", args->input, "Input file (JSON; `rise-gen schema` prints its format)")->required();
   sub->add_option("-o,--output", args->outputs,
                   "Output file, by extension: .glb or .gltf (glTF 2.0), .bvh. Repeat for several; each also gets "
-                  "the metadata sidecar <stem>.json. The folder must exist.")
+                  "the metadata sidecar <stem>.meta.json. The folder must exist.")
       ->required();
   AddSimulationOptions(*sub, args->overrides);
   sub->add_option("--names", args->overrides.names,

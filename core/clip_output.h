@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Writing one generated clip to the files a user asked for, shared by `rise-gen generate` and
 // the batch: the writer is chosen by extension (.glb/.gltf glTF 2.0, .bvh), the root-motion mode
-// and naming preset are applied, and the metadata sidecar `<stem>.json` is written beside each
+// and naming preset are applied, and the metadata sidecar `<stem>.meta.json` is written beside each
 // distinct file stem. All or nothing: paths are checked before any simulation runs, and when a
 // later writer fails the files already written are removed again.
 #pragma once
@@ -39,7 +39,7 @@ std::string CheckOutputFolder(const std::string& path);
 std::vector<std::string> ClipOutputFiles(const std::vector<std::string>& paths);
 
 // "" unless one of `outputs` (with the files they bring: .bin, sidecar .json) would overwrite the
-// input file; `in.json -o in.glb` would otherwise replace the input with the clip's sidecar.
+// input file (`in.meta.json -o in.glb` would replace the input with the clip's sidecar).
 std::string CheckOutputsSpareInput(const std::vector<std::string>& outputs, const std::string& input);
 
 // Writes `clip` (as simulated: root motion baked, canonical names) to every path. Returns "" on

@@ -26,7 +26,7 @@ namespace rise {
 struct BvhOptions {
   BvhFormat format;
   NamingPreset naming = NamingPreset::kDefault;
-  // Also write the metadata sidecar `<clip>.json` (clip_metadata_json.h).
+  // Also write the metadata sidecar `<clip>.meta.json` (clip_metadata_json.h).
   bool writeSidecar = true;
 };
 

@@ -79,7 +79,7 @@ std::string MetadataFromJson(const std::string& text, ClipMetadata& metadata) {
 }
 
 std::string SidecarPath(const std::string& clipPath) {
-  return std::filesystem::path(clipPath).replace_extension(".json").string();
+  return std::filesystem::path(clipPath).replace_extension(".meta.json").string();
 }
 
 std::string WriteMetadataSidecar(const Clip& clip, const std::string& clipPath) {

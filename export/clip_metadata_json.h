@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The clip's metadata as JSON: the sidecar `<clip>.json` next to every written
+// The clip's metadata as JSON: the sidecar `<clip>.meta.json` next to every written
 // clip and the `extras` of its glTF animation hold the same document.
 //
 // Document (all times in seconds from the first frame):

@@ -11,4 +11,4 @@ mkdir -p out
 status=0
 ./build/cli/rise-gen samples/prone.json -o out/prone.glb -o out/prone.bvh || status=$?
 if [ "$status" -gt 1 ]; then exit "$status"; fi
-echo "Wrote out/prone.glb, out/prone.bvh and out/prone.json (metadata sidecar)."
+echo "Wrote out/prone.glb, out/prone.bvh and out/prone.meta.json (metadata sidecar)."

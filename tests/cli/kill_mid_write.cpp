@@ -4,7 +4,7 @@
 //
 //   kill_mid_write <rise-gen> <input.json> <manifest.json> <work folder>
 //
-// Part 1, one clip: a good old out.glb/out.bvh/out.json (from --seed 1) is overwritten by a run
+// Part 1, one clip: a good old out.glb/out.bvh/out.meta.json (from --seed 1) is overwritten by a run
 // with --seed 2. Most kills wait for the moment rise-gen creates the temporary file of a chosen
 // output (inotify reports it within microseconds) and then a random 0-2 ms, so they land inside
 // the write itself; the others land at a random time of the whole run. After each kill every
@@ -132,7 +132,7 @@ bool WaitForCreate(int inotify, const std::string& prefix, pid_t pid) {
 void OneClip(const std::string& riseGen, const std::string& input, const fs::path& work) {
   const fs::path oldDir = work / "old", newDir = work / "new", out = work / "out";
   for (const fs::path& dir : {oldDir, newDir, out}) fs::create_directories(dir);
-  const std::vector<std::string> names = {"clip.glb", "clip.bvh", "clip.json"};
+  const std::vector<std::string> names = {"clip.glb", "clip.bvh", "clip.meta.json"};
   // 240 fps over 10 s: multi-megabyte files whose writes take long enough to be hit.
   auto command = [&](const fs::path& dir, const char* seed) {
     return std::vector<std::string>{riseGen,

@@ -52,10 +52,10 @@ rise_cli_test(schema EXIT 0 REGEX "\"\\$schema\": \"https://json-schema.org/draf
 rise_cli_test(generate_short_clip EXIT 1
   REGEX "supine.json -> c.glb, c.bvh: did not stand within 2.0 s.*2.00 s, 61 frames at 30 fps; quality FAIL \\(.*ends standing"
   ARGS ${RISE_SAMPLES}/supine.json -o c.glb -o c.bvh --max-duration 2 --trace t.jsonl --preview p.png
-  PRESENT c.glb c.bvh c.json t.jsonl p.png)
+  PRESENT c.glb c.bvh c.meta.json t.jsonl p.png)
 rise_cli_test(generate_subcommand_overrides EXIT 1 REGEX "1.00 s, 61 frames at 60 fps"
   ARGS generate ${RISE_SAMPLES}/prone.json -o c.gltf --max-duration 1 --fps 60 --seed 9 --names ue --in-place
-  PRESENT c.gltf c.bin c.json)
+  PRESENT c.gltf c.bin c.meta.json)
 rise_cli_test(generate_json EXIT 1 REGEX "\"stood\": false.*\"quality\": {.*\"passed\": false"
   ARGS ${RISE_SAMPLES}/side.json -o c.glb --max-duration 1 --json --root-motion extract PRESENT c.glb)
 rise_cli_test(generate_quiet EXIT 1 REGEX "stdout: \nstderr: \n" ARGS ${RISE_SAMPLES}/supine.json -o c.bvh --max-duration 1 -q
@@ -67,7 +67,7 @@ rise_cli_test(generate_stands EXIT 0 REGEX "stood at [0-9.]+ s.*quality PASS"
 set_tests_properties(cli.generate_stands PROPERTIES LABELS "cli;controller")
 
 # --- bad input: exit 2, one message naming file, path, found and allowed; no file written ---
-set(no_output ABSENT c.glb c.json)
+set(no_output ABSENT c.glb c.meta.json)
 function(rise_bad_input name regex)
   rise_cli_test(bad_${name} EXIT 2 REGEX "${regex}" ARGS ${ARGN} ${no_output})
 endfunction()
@@ -112,11 +112,16 @@ rise_bad_input(joint_unknown "start.joints_deg.tail: unknown joint \"tail\" allo
   ${bad}/joint_unknown.json -o c.glb)
 # Read-only means no write permission bits: refused before the simulation, even when root runs it.
 rise_cli_test(bad_read_only_folder EXIT 2 REGEX "cannot write 'ro/c.glb': folder 'ro' is read-only"
-  ARGS ${RISE_SAMPLES}/supine.json -o ro/c.glb ABSENT ro/c.glb ro/c.json SETUP sh -c "mkdir ro && chmod a-w ro")
+  ARGS ${RISE_SAMPLES}/supine.json -o ro/c.glb ABSENT ro/c.glb ro/c.meta.json SETUP sh -c "mkdir ro && chmod a-w ro")
 rise_cli_test(bad_read_only_file EXIT 2 REGEX "cannot write 'c.glb': the file is read-only"
-  ARGS ${RISE_SAMPLES}/supine.json -o c.glb PRESENT c.glb ABSENT c.json SETUP sh -c "echo old > c.glb && chmod a-w c.glb")
-rise_cli_test(bad_output_is_input EXIT 2 REGEX "in.glb \\(its file in.json\\): would overwrite the input file"
-  ARGS in.json -o in.glb PRESENT in.json ABSENT in.glb SETUP ${CMAKE_COMMAND} -E copy ${RISE_SAMPLES}/supine.json in.json)
+  ARGS ${RISE_SAMPLES}/supine.json -o c.glb PRESENT c.glb ABSENT c.meta.json SETUP sh -c "echo old > c.glb && chmod a-w c.glb")
+rise_cli_test(bad_output_is_input EXIT 2 REGEX "in.glb \\(its file in.meta.json\\): would overwrite the input file"
+  ARGS in.meta.json -o in.glb PRESENT in.meta.json ABSENT in.glb
+  SETUP ${CMAKE_COMMAND} -E copy ${RISE_SAMPLES}/supine.json in.meta.json)
+# The usual naming, walk.json -o walk.glb, leaves the input alone (the sidecar is walk.meta.json).
+rise_cli_test(generate_beside_input EXIT 1 REGEX "1.00 s"
+  ARGS in.json -o in.glb --max-duration 1 PRESENT in.json in.glb in.meta.json
+  SETUP ${CMAKE_COMMAND} -E copy ${RISE_SAMPLES}/supine.json in.json)
 
 # --- batch manifests and options ---
 set(tiny ${RISE_CLI_DIR}/tiny_library.json)
@@ -142,7 +147,7 @@ rise_cli_test(bad_batch_read_only EXIT 2 REGEX "cannot write 'ro/index.json': fo
 rise_cli_test(batch_failures EXIT 1
   REGEX "4 clips: 0 ok, 4 failed, 0 errors, 0 pending.*back_supine_s1 failed: missed the quality bars: ends standing"
   ARGS batch ${tiny} -o out --jobs 2 --library-glb SETUP ${CMAKE_COMMAND} -E make_directory out
-  PRESENT out/index.json out/back_supine_s1.glb out/back_supine_s1.bvh out/back_supine_s1.json
+  PRESENT out/index.json out/back_supine_s1.glb out/back_supine_s1.bvh out/back_supine_s1.meta.json
           out/side_side_left_s1.glb out/stomach_prone_turned_s1.glb out/custom_dropped.glb
           out/library_default.glb out/library_small.glb)
 

@@ -100,7 +100,7 @@ TEST_SUITE("batch_runner") {
     CHECK(entry["error"].get<std::string>().find("ends standing") != std::string::npos);
     CHECK(entry["files"]["glb"] == "back_supine_s1.glb");
     CHECK(entry["files"]["bvh"] == "back_supine_s1.bvh");
-    CHECK(entry["files"]["metadata"] == "back_supine_s1.json");
+    CHECK(entry["files"]["metadata"] == "back_supine_s1.meta.json");
     CHECK(entry["input"] == rise::RiseSpecToJson(manifest.clips[1].spec));
     CHECK(entry["input_hash"] == rise::InputHash(manifest.clips[1].spec));
     CHECK(entry["frames"] == 21);  // 1 s at 20 fps
@@ -156,7 +156,7 @@ TEST_SUITE("batch_runner") {
     CHECK(entry["status"] == "error");
     CHECK(entry["error"].get<std::string>().find("back_supine_s1.bvh") != std::string::npos);
     CHECK_FALSE(fs::exists(fs::path(options.outDir) / "back_supine_s1.glb"));
-    CHECK_FALSE(fs::exists(fs::path(options.outDir) / "back_supine_s1.json"));
+    CHECK_FALSE(fs::exists(fs::path(options.outDir) / "back_supine_s1.meta.json"));
     CHECK(fs::exists(fs::path(options.outDir) / "stomach_prone_s1.glb"));
   }
 

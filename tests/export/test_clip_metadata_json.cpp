@@ -35,8 +35,8 @@ TEST_SUITE("clip_metadata_json") {
     CHECK(nlohmann::json::parse(back.parametersJson) == doc["parameters"]);
   }
   TEST_CASE("sidecar path and malformed documents") {
-    CHECK(rise::SidecarPath("out/rise.glb") == "out/rise.json");
-    CHECK(rise::SidecarPath("rise.bvh") == "rise.json");
+    CHECK(rise::SidecarPath("out/rise.glb") == "out/rise.meta.json");
+    CHECK(rise::SidecarPath("rise.bvh") == "rise.meta.json");
     rise::ClipMetadata metadata;
     CHECK(rise::MetadataFromJson("[1, 2]", metadata).find("not a JSON object") != std::string::npos);
     CHECK(rise::MetadataFromJson(R"({"phases": [{"name": 3}]})", metadata).find("malformed") != std::string::npos);

@@ -77,7 +77,7 @@ TEST_SUITE("gltf_writer") {
 
     // The same metadata in the sidecar.
     rise::ClipMetadata sidecar;
-    REQUIRE(rise::MetadataFromJson(rise::test::FileContents(folder.File("swing.json")), sidecar) == "");
+    REQUIRE(rise::MetadataFromJson(rise::test::FileContents(folder.File("swing.meta.json")), sidecar) == "");
     CHECK(sidecar.phases.size() == 2);
     CHECK(sidecar.phases[1].name == "rise");
     CHECK(sidecar.seed == 42);
