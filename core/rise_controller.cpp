@@ -1034,6 +1034,10 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       move.to = RolledTrunk(r, 0.0f, glm::radians(pushing ? 65.0f : 30.0f));
       set(farArm, swing(farArm, {0, 10, 10, 0, 0}));
       set(farLeg, pushing ? HoldLimb(r, farLeg, true) : swing(farLeg, {40, -10, 60, -20, 0}));
+      // The near leg straightens under the turning pelvis with a lift: held to
+      // its angles alone its ankle's goal went 5-8 cm into the ground, and the
+      // foot was pushed along it (side starts: feet 8.2 -> 6.9 cm median).
+      set(nearLeg, swing(nearLeg, {5, 0, 5, -20, 0}));
       break;
     }
     case RollStage::kLie:
