@@ -1026,8 +1026,8 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       // down alongside (brought down beside the head, flexion 45, abduction
       // 45, elbow 90 deg, its hand slid 14-16 cm as the chest came down onto
       // the front: 12 of 12 side_left starts; alongside, 4 slid 5-6 cm). A foot
-      // still planted from the push holds the
-      // pelvis from falling back, so the chest can lead by the spine's full twist.
+      // still planted from the push holds the pelvis from falling back, so the
+      // chest can lead by the spine's full twist.
       move.name = "over";
       move.duration = 0.9;
       const bool pushing = planted_[static_cast<int>(farLeg)];
@@ -1091,7 +1091,8 @@ std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading
     const Limb limb = static_cast<Limb>(i);
     move.limbs[i] = HoldLimb(r, limb, false);
     if (!IsArm(limb)) continue;
-    const LimbMove out = RollLimb(r, limb, turn ? std::array<float, 5>{-55, 90, 0, 0, 0} : std::array<float, 5>{170, 90, 0, 0, 0});
+    const std::array<float, 5> outToSide{170, 90, 0, 0, 0}, turnedThere{-55, 90, 0, 0, 0};
+    const LimbMove out = RollLimb(r, limb, turn ? turnedThere : outToSide);
     const bool needed = turn ? out.from.y > kArmOutAbduction && out.from.x > 0.0f : out.from.x > kOverheadArm;
     if (needed) move.limbs[i] = out, any = true;
   }
