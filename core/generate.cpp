@@ -204,6 +204,7 @@ std::string TraceToJsonLines(const std::vector<TraceSample>& trace) {
     line["move"] = sample.move;
     line["com"] = vec(sample.com);
     line["com_goal"] = vec(sample.comGoal);
+    line["heading"] = vec(sample.heading);
     line["tracking_error"] = sample.trackingError;
     line["feet_distance"] = sample.feetDistance;
     nlohmann::json support = nlohmann::json::array();

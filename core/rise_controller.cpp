@@ -42,6 +42,10 @@ constexpr int kMaxCrawlSteps = 24;
 constexpr float kLiftMargin = 0.03f;  // m
 constexpr float kShiftMargin = 0.06f;  // m
 constexpr int kMaxShiftTries = 2;
+// A limb a put-down leaves in the air this many times in a row ends the try
+// like a fall (stress seed 105: a foot hung 0.3 m up for 25 s, put down
+// again and again where its hip could not take it).
+constexpr int kMaxPutDowns = 4;
 // While a foot steps, the CoM stays this far behind the hands' line: over it
 // the body pivots on its hands.
 constexpr float kFootLiftHandLineMargin = 0.22f;  // m
@@ -85,6 +89,8 @@ constexpr float kPlantedWristGain = 0.15f;
 // squat the rise starts from is balanced side to side (0.10-0.15 m measured:
 // 11, 14 and 5 of 36 prone starts stood).
 constexpr float kCrawlHalfStance = 0.12f;  // m
+// A foot farther than this across from its place in that stance steps there first.
+constexpr float kMaxStanceDrift = 0.15f;  // m
 constexpr int kMaxRetries = 4;
 // The fastest pace of the moves that balance the body on its hands and feet
 // or its feet (push, crawl, rise, stand): the paper's quasi-static balance.
@@ -838,6 +844,7 @@ bool RiseController::Fallen(const BodyReading& r) const {
   // failed try like a fall (a slope can roll it back onto its back each time).
   if (phase_ == RisePhase::kRoll) return rollMoves_ > kMaxRollMoves;
   if (phase_ == RisePhase::kCrawl) {
+    if (putDowns_ > kMaxPutDowns) return true;
     // Down on the ground again (sitting or lying) with the hands and feet no longer bearing.
     // (Squatting on both feet with the CoM over them is not down: it is where the crawl ends.)
     const int bearing = static_cast<int>(std::count(r.touching.begin(), r.touching.end(), true));
@@ -1233,6 +1240,7 @@ RiseController::Move RiseController::PlanPush(const BodyReading& r) {
   crawlSteps_ = 0;
   shiftTries_ = 0;
   stepSpot_ = {};
+  putDowns_ = 0;
   feetIn_ = false;
   crawlOffset_ = glm::vec3(0.0f);
   return move;
@@ -1262,6 +1270,13 @@ float RiseController::HandsAhead(const BodyReading& r) const {
   return 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
 }
 
+float RiseController::StanceDrift(const BodyReading& r, Limb foot) const {
+  const glm::vec3 left = glm::normalize(glm::cross(kUp, heading_));
+  const glm::vec3 hands = 0.5f * (ContactPoint(r, Limb::kHandLeft) + ContactPoint(r, Limb::kHandRight));
+  const float side = IsLeft(foot) ? 1.0f : -1.0f;
+  return std::fabs(glm::dot(ContactPoint(r, foot) - hands, left) - side * kCrawlHalfStance);
+}
+
 std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
   // Phase 1 brings the feet in to the hands until the CoM can sit back over
   // them with the hands still down (bench/reach_probe: the hands within about
@@ -1282,6 +1297,13 @@ std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
   if (move_.name == "heels down" && FeetRegion(r).SignedDistance(Ground(r.com)) >= kSitBackReach) {
     return {HandsAhead(r, Limb::kHandLeft) >= HandsAhead(r, Limb::kHandRight) ? Limb::kHandLeft : Limb::kHandRight};
   }
+  // A foot far to the side of its place steps back across first: every step
+  // corrects its own foot's width, but the walk-in steps only the rear foot,
+  // and a body bent sideways as it came up, both feet off to one side of the
+  // hands, walked its rear foot in and out until the time ran out while the
+  // other stayed 0.7 m wide (stress seed 33).
+  const float driftLeft = StanceDrift(r, Limb::kFootLeft), driftRight = StanceDrift(r, Limb::kFootRight);
+  if (std::max(driftLeft, driftRight) > kMaxStanceDrift) return {driftLeft >= driftRight ? Limb::kFootLeft : Limb::kFootRight};
   // By the ankles, as the step length measures them (toe edges can sit askew).
   const float stagger = glm::dot(r.jointPositions[rig_.end[2]] - r.jointPositions[rig_.end[3]], heading_);
   const Limb rear = stagger < 0.0f ? Limb::kFootLeft : Limb::kFootRight;
@@ -1443,6 +1465,11 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   // holding, bench/prone_variants 72 (prone 20 s, rolled 30 s) stood 162 -> 210
   // of 288, and prone clips passing every bar went 15 -> 21 of 40.
   if (squatting && !steady && comToFeet < kSitBackReach) {
+    // Still not steady after holding: the CoM rests just off the soles (a
+    // heels-down on a slope left it 3 cm ahead of the toe edges), and holding
+    // again only ran out the crawl's steps into a rise that fell on its face.
+    // Sitting back takes it over them.
+    if (move_.name == "steady") return FinishCrawl(r);
     Move move = OnAllFours(r, "steady", kSteadyHold);
     move.to = move.from;
     ++crawlSteps_;
@@ -1499,6 +1526,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   Move best;
   // A limb left in the air by a short step only goes down where it is.
   const bool putDown = Clearance(r, limb) > kLandedClearance;
+  putDowns_ = putDown ? putDowns_ + 1 : 0;
   static constexpr std::array<float, 5> kFractions{1.0f, 0.75f, 0.5f, 0.3f, 0.15f};
   float nominalFootStep = 0.0f;
   // A foot steps with the CoM held at FootLiftCom; if no step length is
@@ -1527,7 +1555,9 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       // Straight down, turned as it is, aiming below the ground: the ground
       // stops it, and the move ends once it touches.
       m.toRotation = m.fromRotation;
-      glm::vec3 across = stepSpot_[i] ? *stepSpot_[i] - m.from : glm::vec3(0.0f);
+      // Toward the step's own spot the first time; once that has failed,
+      // straight down from where the limb hangs, the CoM held where it is.
+      glm::vec3 across = stepSpot_[i] && putDowns_ == 1 ? *stepSpot_[i] - m.from : glm::vec3(0.0f);
       across -= ground_.normal * glm::dot(across, ground_.normal);
       m.to = m.from + across - ground_.normal * (Clearance(r, limb) + kLandingReach);
       m.lift = 0.0f;
@@ -1558,7 +1588,8 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
     // for it touching down there: reaching for the aim pulled the body over.
     const float aimBelow = putDown ? kLandingReach : 0.0f;
     m.to += ground_.normal * aimBelow;
-    PlanTrunk(move, IsArm(limb) || comStays ? r.com : FootLiftCom(r, limb), {limb != Limb::kHandLeft, limb != Limb::kHandRight});
+    const bool holdCom = IsArm(limb) || comStays || putDowns_ > 1;
+    PlanTrunk(move, holdCom ? r.com : FootLiftCom(r, limb), {limb != Limb::kHandLeft, limb != Limb::kHandRight});
     move.limbs[i].to -= ground_.normal * aimBelow;
     const bool reachable = putDown || Reachable(move);
     // None reachable: the shortest step with the CoM at FootLiftCom, as before.
@@ -1911,6 +1942,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
   trace_.phase = phase_;
   trace_.move = hasMove_ ? move_.name : "settle";
   trace_.com = reading.com;
+  trace_.heading = heading_;
   trace_.touching = reading.touching;
   trace_.planted = planted_;
   for (int i = 0; i < kLimbCount; ++i) {

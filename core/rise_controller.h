@@ -52,6 +52,7 @@ struct TraceSample {
   std::string move;
   glm::vec3 com{0.0f};
   glm::vec3 comGoal{0.0f};
+  glm::vec3 heading{0.0f, 0.0f, 1.0f};  // the way the plan faces the body, along the ground
   SupportPolygon support;
   float feetDistance = 0.0f;  // CoM ground projection to the feet's soles, m (negative inside)
   std::array<glm::vec3, kLimbCount> limbTargets{};
@@ -154,6 +155,9 @@ class RiseController {
   float HandsAhead(const BodyReading& reading, Limb hand) const;
   // The same for the hands' middle.
   float HandsAhead(const BodyReading& reading) const;
+  // How far a foot is across the heading from its side of the crawl stance
+  // (kCrawlHalfStance beside the hands' midline), m.
+  float StanceDrift(const BodyReading& reading, Limb foot) const;
   // Ground hull of the contact points of every limb but one.
   SupportPolygon StanceWithout(const BodyReading& reading, Limb lifted) const;
   float CrawlComHeight(const BodyReading& reading) const;
@@ -274,6 +278,7 @@ class RiseController {
   // Where each limb's last step was to land: a swing the servos leave short
   // is finished by putting the limb down there, not where it hangs.
   std::array<std::optional<glm::vec3>, kLimbCount> stepSpot_{};
+  int putDowns_ = 0;  // put-downs in a row that left their limb in the air
   float rollSign_ = 0.0f;                   // +1 rolling onto the left side, -1 onto the right; 0 before the roll
   RollStage rollStage_ = RollStage::kNone;  // the roll's last move
   int rollMoves_ = 0;                       // moves since this roll started
