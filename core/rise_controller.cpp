@@ -1675,7 +1675,22 @@ RiseController::Move RiseController::PlanRise(const BodyReading& r) {
 }
 
 RiseController::Move RiseController::PlanStand(const BodyReading& r) {
+  // Standing holds the pose the rise ended in, and its balance feedback
+  // carries on: re-planned from the measured trunk and legs every second, the
+  // goal went back to where the servos sagged to and the integral to zero, and
+  // on a 10 deg cross-slope that jolted the CoM 2 cm sideways and back each
+  // time: the body never came to rest.
+  const bool holding = hasMove_ && (move_.phase == RisePhase::kRise || move_.phase == RisePhase::kStand);
+  const glm::vec3 offset = balanceOffset_;
+  const float lean = balanceLean_;
+  const TrunkPose held = move_.to;
   Move move = PlanRise(r);
+  if (holding) {
+    move.from = held;
+    move.legPitches = {};
+    balanceOffset_ = offset;
+    balanceLean_ = lean;
+  }
   move.name = "stand";
   move.phase = RisePhase::kStand;
   move.duration = 1.0;
