@@ -358,6 +358,20 @@ TEST_CASE("on a slope facing uphill the body stands upright, balanced along grav
   }
 }
 
+TEST_CASE("standing across a slope, the body comes to rest and the clip ends") {
+  // One foot uphill of the other: the stand's 1 s moves, each re-planned from
+  // the measured (sagging) trunk with its balance integral reset, swung the CoM
+  // 2 cm sideways at 1 Hz, so the still stand that ends a clip never came and
+  // the clip ran on to max_duration_s, 15 s after the body stood.
+  const auto spec = rise::ParseRiseSpec(
+      R"({"start":{"posture":"prone","heading_deg":90},"terrain":{"slope_deg":10},"max_duration_s":30})", "start.json");
+  REQUIRE(spec.IsOk());
+  const rise::GeneratedClip result = rise::GenerateClip(spec.Value());
+  INFO(result.outcome << ", clip " << result.clip.Duration() << " s");
+  REQUIRE(result.stood);
+  CHECK(result.clip.Duration() < result.timeToStand + 3.0);
+}
+
 TEST_CASE("the fastest style stands with every bar: the balancing phases keep a quasi-static pace") {
   // At speed 3 with every move 3x faster, 43 of 72 prone starts fell (crawl and
   // rise); these four among them. Push, crawl and rise go at most 1.5x.
