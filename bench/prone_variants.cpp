@@ -7,7 +7,8 @@
 // slide comes from), and at the end how many starts pass every bar.
 //
 //   prone_variants [count] [only] [posture]
-//   env: DUR (max_duration_s, 20), SPEED (style.speed, 1), FRIC (terrain.friction, 0.8), TIRED (style.tiredness, 0), TRACE=file (JSON lines of `only`),
+//   env: DUR (max_duration_s, 20), SPEED (style.speed, 1), FRIC (terrain.friction, 0.8), SLOPE (terrain.slope_deg, 0),
+//        TIRED (style.tiredness, 0), TRACE=file (JSON lines of `only`),
 //        OUT=dir (dir/v.glb of `only`)
 #include "bench/variant_run.h"
 #include "core/clip_output.h"
@@ -35,10 +36,10 @@ int main(int argc, char** argv) {
     char text[512];
     std::snprintf(text, sizeof text,
                   "{\"character\":{\"height_m\":%.2f,\"mass_kg\":%.0f},\"start\":{\"posture\":\"%s\",\"heading_deg\":%d},"
-                  "\"seed\":%d,\"max_duration_s\":%s,\"style\":{\"speed\":%s,\"tiredness\":%s},\"terrain\":{\"friction\":%s}}",
+                  "\"seed\":%d,\"max_duration_s\":%s,\"style\":{\"speed\":%s,\"tiredness\":%s},\"terrain\":{\"friction\":%s,\"slope_deg\":%s}}",
                   height, mass, posture.c_str(), (k * 37) % 360, k + 1, std::getenv("DUR") ? std::getenv("DUR") : "20",
                   std::getenv("SPEED") ? std::getenv("SPEED") : "1", std::getenv("TIRED") ? std::getenv("TIRED") : "0",
-                  std::getenv("FRIC") ? std::getenv("FRIC") : "0.8");
+                  std::getenv("FRIC") ? std::getenv("FRIC") : "0.8", std::getenv("SLOPE") ? std::getenv("SLOPE") : "0");
     const std::optional<bench::VariantRun> run = bench::RunVariant(k, text, "variant.json");
     if (!run) return 2;
     const rise::GeneratedClip& clip = run->clip;

@@ -16,8 +16,6 @@ namespace {
 // An end counts as matching its goal when its key direction is within 2 deg.
 const float kEndKeyCos = std::cos(glm::radians(2.0f));
 
-bool IsArm(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kHandRight; }
-
 int RequireJoint(const Skeleton& skeleton, const char* name) {
   const int index = skeleton.Find(name);
   RISE_ASSERT_MSG(index >= 0, name);

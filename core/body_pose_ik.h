@@ -30,6 +30,9 @@ namespace rise {
 enum class Limb { kHandLeft = 0, kHandRight, kFootLeft, kFootRight };
 constexpr int kLimbCount = 4;
 const char* LimbName(Limb limb);  // "hand_l", "hand_r", "foot_l", "foot_r"
+inline bool IsArm(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kHandRight; }
+inline bool IsLeft(Limb limb) { return limb == Limb::kHandLeft || limb == Limb::kFootLeft; }
+inline Limb OtherHand(Limb hand) { return hand == Limb::kHandLeft ? Limb::kHandRight : Limb::kHandLeft; }
 
 struct LimbGoal {
   glm::vec3 target{0.0f};                           // wrist or ankle joint position, world

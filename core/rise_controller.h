@@ -22,6 +22,14 @@
 //           the CoM; swap the support hand; repeat until the CoM is over the feet
 //   rise    Phase 2: release the hands, extend the legs, keep the CoM over the feet
 //   stand   upright, arms at the sides, still
+//
+// Its definitions are split by what they hold: rise_controller.cpp (the state
+// machine and the control step), rise_roll.cpp, rise_place.cpp (place and
+// push), rise_crawl.cpp and rise_stand.cpp (rise and stand) plan the phases'
+// moves; rise_pose_goal.cpp turns a move into the pose the servos track;
+// rise_body_geometry.cpp measures the body; rise_feed_forward.cpp adds the
+// gravity compensation and virtual forces. rise_controller_detail.h holds what
+// they share.
 #pragma once
 
 #include "core/biped_def.h"

@@ -1,0 +1,264 @@
+// SPDX-License-Identifier: MIT
+// Phase 0, the roll: from the back or a side onto the front, the far leg pushing,
+// the chest leading over, the arm left overhead brought out round the side.
+#include "core/rise_controller_detail.h"
+
+namespace rise {
+
+using namespace rise_controller_detail;
+
+namespace {
+
+// A far leg whose ankle is this far from its hip, of the leg's reach, is set to push.
+constexpr float kTuckedLeg = 0.8f;
+
+// ... and its foot no higher than this over the ground: the push off presses it down.
+constexpr float kTuckedClearance = 0.2f;  // m
+constexpr float kChestOverRoll = glm::radians(125.0f);
+constexpr float kProneRoll = glm::radians(135.0f);
+
+// Shoulder flexion past which an arm lies overhead.
+constexpr float kOverheadArm = glm::radians(60.0f);
+
+// Shoulder abduction past which an arm is out to the side (turned there by the arm out).
+constexpr float kArmOutAbduction = glm::radians(70.0f);
+
+}  // namespace
+
+float RiseController::RollAngle(const glm::quat& segment) const {
+  const glm::vec3 front = segment * glm::vec3(0, 0, 1);
+  const glm::vec3 side = rollSign_ * (segment * glm::vec3(1, 0, 0));
+  const float angle = std::atan2(-glm::dot(side, ground_.normal), glm::dot(front, ground_.normal));
+  // Face down a little past flat reads as turned on past pi, not as -pi (on
+  // the back the other way round): an arm lifted out to the side tipped a
+  // prone chest a few degrees on, and the roll flipped to the other side and
+  // began again from "over".
+  return angle < -0.5f * kPi ? angle + 2.0f * kPi : angle;
+}
+
+RiseController::LimbMove RiseController::RollLimb(const BodyReading& r, Limb limb,
+                                                  const std::array<float, 5>& anglesDeg) const {
+  const int i = static_cast<int>(limb);
+  const std::vector<glm::quat> local = LocalRotations(def_.skeleton, r.jointRotations);
+  float root[3] = {}, hinge[3] = {};
+  def_.JointAngles(rig_.upper[i], local[rig_.upper[i]], root);
+  def_.JointAngles(rig_.lower[i], local[rig_.lower[i]], hinge);
+  LimbMove m;
+  m.mode = LimbMode::kJoint;
+  m.from = glm::radians(glm::vec3(root[0], root[1], hinge[0]));
+  m.to = glm::radians(glm::vec3(anglesDeg[0], anglesDeg[1], anglesDeg[2]));
+  m.fromRotation = local[rig_.end[i]];
+  m.toRotation = def_.JointRotation(rig_.end[i], &anglesDeg[3]);
+  return m;
+}
+
+RiseController::TrunkPose RiseController::RolledTrunk(const BodyReading& r, float angle, float twist) const {
+  const TrunkPose measured = MeasuredTrunk(r);
+  const glm::quat pelvis = measured.pelvisRotation;
+  const BoneBox& box = def_.skeleton.joints[rig_.pelvis].box;
+  // On the back the trunk turns over the back edge of the roll side, past the
+  // side over its front edge.
+  const float frontOrBack = RollAngle(pelvis) < 0.5f * kPi ? -1.0f : 1.0f;
+  const glm::vec3 pivot = measured.pelvis + pelvis * (box.center + glm::vec3(rollSign_ * box.halfExtents.x, 0.0f,
+                                                                             frontOrBack * box.halfExtents.z));
+  const glm::quat turn = glm::angleAxis(rollSign_ * angle, pelvis * kUp);
+  TrunkPose rolled;
+  rolled.pelvis = pivot + turn * (measured.pelvis - pivot);
+  rolled.pelvisRotation = glm::normalize(turn * pelvis);
+  rolled.chestRotation = glm::normalize(rolled.pelvisRotation * glm::angleAxis(rollSign_ * twist, kUp));
+  return rolled;
+}
+
+RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
+  const glm::quat chest = r.jointRotations[rig_.chest];
+  const glm::quat pelvis = r.jointRotations[rig_.pelvis];
+  // Crouched on both feet with the CoM over them: Phase 2 directly.
+  if (OnItsFeet(r)) return PlanRise(r);
+  // From rest (the start, or after a fall) a roll starts afresh.
+  if (phase_ == RisePhase::kSettle) rollSign_ = 0.0f, rollStage_ = RollStage::kNone, rollMoves_ = 0;
+  const glm::vec3 face = chest * glm::vec3(0, 0, 1);
+  // Face down already: Phase 0 goes straight to placing hands and feet.
+  if (rollSign_ == 0.0f && glm::dot(face, ground_.normal) < -0.7f) return PlanPlace(r);
+  if (rollSign_ == 0.0f) {
+    // Roll over the side that is already down; flat on the back, the seed picks.
+    const float leftDown = -glm::dot(chest * glm::vec3(1, 0, 0), ground_.normal);
+    rollSign_ = std::fabs(leftDown) > 0.3f ? (leftDown > 0.0f ? 1.0f : -1.0f) : ((rng_() & 1u) ? 1.0f : -1.0f);
+  }
+  // A body that has turned well past its back the other way (a slope or its
+  // own limbs rolled it there) rolls on over that side. Measured the planned
+  // way it looked as if it had not pushed off yet, and the push went on
+  // against it until the roll's moves ran out. (In 126 failed stress runs
+  // push offs were 94 of the falls; this, 78; with the re-tuck below, 6.)
+  if (std::max(RollAngle(pelvis), RollAngle(chest)) < -kPushedRoll) rollSign_ = -rollSign_;
+  const float pelvisRoll = RollAngle(pelvis), chestRoll = RollAngle(chest);
+  const bool prone = std::min(pelvisRoll, chestRoll) > kProneRoll;
+  // Lying on the front with the legs straightened: an arm left overhead comes
+  // out to the side, then the prone path takes over.
+  for (const RollStage from : {RollStage::kLie, RollStage::kArmOut}) {
+    if (rollStage_ != from || !prone) continue;
+    rollStage_ = from == RollStage::kLie ? RollStage::kArmOut : RollStage::kArmTurn;
+    if (std::optional<Move> armOut = PlanArmOut(r, rollStage_)) return *armOut;
+  }
+  if (rollStage_ == RollStage::kArmTurn && prone) return PlanPlace(r);
+
+  const Limb nearArm = rollSign_ > 0.0f ? Limb::kHandLeft : Limb::kHandRight;
+  const Limb farArm = OtherHand(nearArm);
+  const Limb nearLeg = rollSign_ > 0.0f ? Limb::kFootLeft : Limb::kFootRight;
+  const Limb farLeg = rollSign_ > 0.0f ? Limb::kFootRight : Limb::kFootLeft;
+
+  // Each move is chosen by how far the trunk has turned, so one that does not
+  // get the body as far as planned is followed by the one that fits where it is.
+  RollStage stage = RollStage::kOver;
+  if (prone || chestRoll > kChestOverRoll) stage = RollStage::kLie;
+  // The push needs the far foot down near the buttock, the knee up: a leg
+  // left straight (a roll that fell back, or a custom start) only slid its
+  // foot, and the push went on until the roll's moves ran out.
+  const int far = static_cast<int>(farLeg);
+  const bool farFootSet = Clearance(r, farLeg) < kTuckedClearance &&
+                          glm::length(r.jointPositions[rig_.end[far]] - r.jointPositions[rig_.upper[far]]) < kTuckedLeg * legReach_;
+  const bool firstMove = rollStage_ == RollStage::kNone;
+  if (pelvisRoll < kPushedRoll) stage = firstMove || !farFootSet ? RollStage::kTuck : RollStage::kPush;
+  const bool pushedOff = pelvisRoll > kLiftOffRoll && !r.touching[far];
+  if (stage == RollStage::kPush && pushedOff) stage = RollStage::kOver;
+  rollStage_ = stage;
+
+  heading_ = HeadingForward(r);
+  Move move;
+  move.phase = RisePhase::kRoll;
+  move.from = MeasuredTrunk(r);
+  auto set = [&](Limb limb, const LimbMove& m) { move.limbs[static_cast<int>(limb)] = m; };
+  auto swing = [&](Limb limb, const std::array<float, 5>& anglesDeg) {
+    LimbMove m = RollLimb(r, limb, anglesDeg);
+    m.lift = static_cast<float>(spec_.style.stepHeightM);
+    return m;
+  };
+  // The arm on the roll side goes overhead so the body rolls over the
+  // shoulder instead of onto the arm. (From the back it was kept along the
+  // side, a log roll, while the arm-out move dragged an overhead hand 50-75 cm;
+  // since that move ends with the arm straight, alongside stood fewer:
+  // bench/prone_variants-style harness, 48 supine at 30 s, 36 against 45.)
+  set(nearArm, RollLimb(r, nearArm, {165, 15, 10, 0, 0}));
+  set(nearLeg, RollLimb(r, nearLeg, {5, 0, 5, -20, 0}));
+  switch (stage) {
+    case RollStage::kTuck: {
+      // The far knee comes up and its foot is set flat beside the buttock and
+      // out to the side, where pushing on it lifts that hip up and over; the
+      // near arm goes overhead now, before the body turns onto it. (Sent only
+      // to point at the sky here and overhead in the push off, 12 supine
+      // starts slid the near foot 25-27 cm as the pelvis turned over it, the
+      // near hand 19-22 cm as it landed overhead; now 18-19 and 17.)
+      move.name = "tuck";
+      move.duration = 0.6;
+      move.to = move.from;
+      const glm::vec3 hip = r.jointPositions[rig_.upper[static_cast<int>(farLeg)]];
+      const glm::vec3 farSide = SafeNormalize(Horizontal(pelvis * glm::vec3(-rollSign_, 0.0f, 0.0f)), glm::vec3(0));
+      const glm::vec3 toe = Project(ground_, hip - heading_ * (0.5f * legReach_) + farSide * (0.25f * legReach_));
+      LimbMove foot = HoldLimb(r, farLeg, false);
+      foot.toRotation = FootRotation(-heading_, 0.0f);
+      foot.to = AnkleForToe(toe, foot.toRotation);
+      // Drawn up from lying on its heel, the foot turns its sole down on the
+      // way, so the heel sweeps well below the ankle: twice a step's lift.
+      foot.lift = 2.0f * static_cast<float>(spec_.style.stepHeightM);
+      set(farLeg, foot);
+      set(nearArm, RollLimb(r, nearArm, {165, 15, 10, 0, 0}));
+      set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
+      break;
+    }
+    case RollStage::kPush:
+      // The planted far foot holds its place while the trunk's goal turns on
+      // over the near edge of the back: the leg's servos push the hip over.
+      // (Less than half a turn per move: the goal is reached by slerp, which
+      // would take the other way round.)
+      move.name = "push off";
+      move.duration = 0.8;
+      move.to = RolledTrunk(r, glm::radians(140.0f) - pelvisRoll, 0.0f);
+      move.rolledTo = kPushedRoll;
+      {
+        // Held where it is, a tucked foot left hovering (the pelvis half
+        // turned, say) stayed up and the push went into the air.
+        LimbMove foot = HoldLimb(r, farLeg, true);
+        foot.to -= ground_.normal * Clearance(r, farLeg);
+        set(farLeg, foot);
+      }
+      set(farArm, RollLimb(r, farArm, {90, 0, 10, 0, 0}));
+      break;
+    case RollStage::kOver: {
+      // Past the side: the chest leads over onto the front, the top arm comes
+      // down alongside (brought down beside the head, flexion 45, abduction
+      // 45, elbow 90 deg, its hand slid 14-16 cm as the chest came down onto
+      // the front: 12 of 12 side_left starts; alongside, 4 slid 5-6 cm). A foot
+      // still planted from the push holds the pelvis from falling back, so the
+      // chest can lead by the spine's full twist.
+      move.name = "over";
+      move.duration = 0.9;
+      const bool pushing = planted_[static_cast<int>(farLeg)];
+      move.to = RolledTrunk(r, 0.0f, glm::radians(pushing ? 65.0f : 30.0f));
+      set(farArm, swing(farArm, {0, 10, 10, 0, 0}));
+      set(farLeg, pushing ? HoldLimb(r, farLeg, true) : swing(farLeg, {40, -10, 60, -20, 0}));
+      // The near leg straightens under the turning pelvis with a lift: held to
+      // its angles alone its ankle's goal went 5-8 cm into the ground, and the
+      // foot was pushed along it (side starts: feet 8.2 -> 6.9 cm median).
+      set(nearLeg, swing(nearLeg, {5, 0, 5, -20, 0}));
+      break;
+    }
+    case RollStage::kLie:
+    case RollStage::kArmOut:
+    case RollStage::kArmTurn:
+    case RollStage::kNone:
+      // The hips straighten and the spine untwists: straightening the top leg
+      // turns the pelvis after the chest onto the front, as a body lying prone.
+      // The knees bend, feet up: straightened along the ground, the legs
+      // dragged their toes 10-12 cm (27 feet in 36 supine starts; the place swings
+      // the feet down to their spots next). The arm overhead swings out along
+      // the ground, nearer to where the hands are placed next. The far arm
+      // lies alongside: bent under the chest (flexion 20, abduction 20,
+      // elbow 60 deg) its hand propped that side 28 deg up, so the near arm
+      // out at the side pointed into the ground; 12 supine / 12 side_left
+      // starts stood 0 / 0 of 12 that way, 12 / 12 alongside.
+      move.name = "lie";
+      move.duration = 0.6;
+      move.to = RolledTrunk(r, 0.0f, 0.0f);
+      set(farArm, swing(farArm, {0, 10, 10, 0, 0}));
+      set(nearArm, swing(nearArm, {165, 60, 10, 0, 0}));
+      set(nearLeg, RollLimb(r, nearLeg, {0, 0, 90, -50, 0}));
+      set(farLeg, RollLimb(r, farLeg, {0, 0, 90, -50, 0}));
+      break;
+  }
+  return move;
+}
+
+std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading& r, RollStage stage) const {
+  // The arm the body rolled over lies overhead. Swung from there straight to
+  // beside the chest it sweeps through the ground, and ended folded under the
+  // shoulder with the elbow down and the hand up: the shoulder rested on it,
+  // the trunk stayed tilted 30 deg, and that hand never reached the ground.
+  // Swung in the shoulder's two angles from overhead to out at the side and
+  // angled toward the hips (flexion -55, abduction 80), it passed through
+  // the directions in front of the chest, into the ground, and dragged the
+  // hand 41-47 cm (12 supine starts). Lying face down, the arm's way out that
+  // stays above the shoulder's height is round the side: first abducted to
+  // 90 deg (out to the side, the hand rising to the shoulder's height as it
+  // goes), where flexion only turns the arm about itself, then turned there
+  // to the flexion of an arm out to the side and raised behind (the
+  // directions the place then swings down from).
+  const bool turn = stage == RollStage::kArmTurn;
+  Move move;
+  move.name = turn ? "arm turn" : "arm out";
+  move.phase = RisePhase::kRoll;
+  move.duration = 0.8;
+  move.from = move.to = MeasuredTrunk(r);
+  bool any = false;
+  for (int i = 0; i < kLimbCount; ++i) {
+    const Limb limb = static_cast<Limb>(i);
+    move.limbs[i] = HoldLimb(r, limb, false);
+    if (!IsArm(limb)) continue;
+    const std::array<float, 5> outToSide{170, 90, 0, 0, 0}, turnedThere{-55, 90, 0, 0, 0};
+    const LimbMove out = RollLimb(r, limb, turn ? turnedThere : outToSide);
+    const bool needed = turn ? out.from.y > kArmOutAbduction && out.from.x > 0.0f : out.from.x > kOverheadArm;
+    if (needed) move.limbs[i] = out, any = true;
+  }
+  if (!any) return std::nullopt;
+  return move;
+}
+
+}  // namespace rise

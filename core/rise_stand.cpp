@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: MIT
+// Phase 2: the rise from the squat with the CoM kept over the feet, and the
+// still stand it ends in.
+#include "core/rise_controller_detail.h"
+
+namespace rise {
+
+using namespace rise_controller_detail;
+
+std::array<float, 2> RiseController::LegPitches(const BodyReading& r, int leg) const {
+  // Pitch from the vertical toward the heading, of the shin (ankle to knee) and
+  // of the thigh (knee to hip).
+  const glm::vec3 ankle = r.jointPositions[rig_.end[leg]], knee = r.jointPositions[rig_.lower[leg]];
+  const glm::vec3 hip = r.jointPositions[rig_.upper[leg]];
+  auto pitch = [&](const glm::vec3& v) { return std::atan2(glm::dot(v, heading_), glm::dot(v, kUp)); };
+  return {pitch(knee - ankle), pitch(hip - knee)};
+}
+
+glm::vec3 RiseController::RisingPelvis(const Move& move, float e, const BodyReading& r) const {
+  // The legs straighten in their own angles, shin and thigh pitch going to zero
+  // together, standing on the feet where they are. A straight line for the
+  // pelvis instead would carry the knees forward of what the ankles allow on
+  // the way up out of a deep squat.
+  glm::vec3 pelvis(0.0f);
+  for (int leg = 2; leg < 4; ++leg) {
+    const float shinLength = glm::length(def_.skeleton.joints[rig_.end[leg]].restOffset);
+    const float thighLength = glm::length(def_.skeleton.joints[rig_.lower[leg]].restOffset);
+    auto along = [&](float pitch) { return kUp * std::cos(pitch) + heading_ * std::sin(pitch); };
+    const std::array<float, 2>& from = move.legPitches[leg - 2];
+    const glm::vec3 ankle = r.jointPositions[rig_.end[leg]];
+    pelvis += 0.5f * (ankle + shinLength * along(from[0] * (1.0f - e)) + thighLength * along(from[1] * (1.0f - e)));
+  }
+  return pelvis;
+}
+
+RiseController::Move RiseController::PlanRise(const BodyReading& r) {
+  Move move;
+  move.name = "rise";
+  move.phase = RisePhase::kRise;
+  move.duration = 2.6;
+  move.keepComOverFeet = true;
+  for (int leg = 2; leg < 4; ++leg) move.legPitches[leg - 2] = LegPitches(r, leg);
+  move.from = MeasuredTrunk(r);
+  move.to.pelvisRotation = move.to.chestRotation = TrunkRotation(heading_, 0.5f * kPi);
+  move.to.pelvis = FeetCentre(r) + kUp * standPelvisHeight_ * 0.985f;
+  for (int i = 0; i < 2; ++i) {
+    LimbMove& m = move.limbs[i];
+    const glm::quat chest = r.jointRotations[rig_.chest];
+    m.mode = LimbMode::kBody;
+    m.from = glm::inverse(chest) * (r.jointPositions[rig_.end[i]] - r.jointPositions[rig_.upper[i]]);
+    m.fromRotation = glm::inverse(chest) * r.jointRotations[rig_.end[i]];
+    m.to = def_.skeleton.BindPositions()[rig_.end[i]] - def_.skeleton.BindPositions()[rig_.upper[i]];
+    m.toRotation = glm::quat(1, 0, 0, 0);
+    m.span = 0.6f;
+  }
+  for (int i = 2; i < 4; ++i) {
+    move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
+    move.limbs[i].span = 0.5f;
+  }
+  balanceOffset_ = glm::vec3(0.0f);
+  balanceLean_ = BalanceLean(move, 0.0f, r, 0.0f, kMaxBalanceLean);
+  return move;
+}
+
+RiseController::Move RiseController::PlanStand(const BodyReading& r) {
+  // Standing holds the pose the rise ended in, and its balance feedback
+  // carries on: re-planned from the measured trunk and legs every second, the
+  // goal went back to where the servos sagged to and the integral to zero, and
+  // on a 10 deg cross-slope that jolted the CoM 2 cm sideways and back each
+  // time: the body never came to rest.
+  const bool holding = hasMove_ && (move_.phase == RisePhase::kRise || move_.phase == RisePhase::kStand);
+  const glm::vec3 offset = balanceOffset_;
+  const float lean = balanceLean_;
+  const TrunkPose held = move_.to;
+  Move move = PlanRise(r);
+  if (holding) {
+    move.from = held;
+    move.legPitches = {};
+    balanceOffset_ = offset;
+    balanceLean_ = lean;
+  }
+  move.name = "stand";
+  move.phase = RisePhase::kStand;
+  move.duration = 1.0;
+  for (int i = 0; i < 2; ++i) move.limbs[i].from = move.limbs[i].to, move.limbs[i].fromRotation = move.limbs[i].toRotation;
+  if (standTime_ < 0.0) standTime_ = r.time;
+  return move;
+}
+
+}  // namespace rise
