@@ -256,11 +256,6 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   // holding, bench/prone_variants 72 (prone 20 s, rolled 30 s) stood 162 -> 210
   // of 288, and prone clips passing every bar went 15 -> 21 of 40.
   if (squatting && !steady && comToFeet < kSitBackReach) {
-    // Still not steady after holding: the CoM rests just off the soles (a
-    // heels-down on a slope left it 3 cm ahead of the toe edges), and holding
-    // again only ran out the crawl's steps into a rise that fell on its face.
-    // Sitting back takes it over them.
-    if (move_.name == "steady") return FinishCrawl(r);
     Move move = OnAllFours(r, "steady", kSteadyHold);
     move.to = move.from;
     ++crawlSteps_;
