@@ -17,17 +17,17 @@ namespace {
 constexpr int kMaxRetries = 4;
 
 // Rest: the fallen body has stopped (the paper waits for this before rising).
-constexpr float kRestSpeed = 0.08f;         // m/s
-constexpr float kRestSpin = 0.4f;           // rad/s
-constexpr double kRestHold = 0.25;          // s the body must stay below both
+constexpr float kRestSpeed = 0.08f;  // m/s
+constexpr float kRestSpin = 0.4f;    // rad/s
+constexpr double kRestHold = 0.25;  // s the body must stay below both
 
 // A clip that ends after the last fall ends on a body at rest by this speed: at
 // kRestSpeed, one creeping down a 20 deg slope at 3 cm/s counted as at rest and
 // the clip's last frames slid 1 mm each.
-constexpr float kFinalRestSpeed = 0.02f;    // m/s
+constexpr float kFinalRestSpeed = 0.02f;  // m/s
 
 // Standing still long enough to end the clip (the checker looks at the last 0.5 s).
-constexpr double kStandHold = 1.2;          // s
+constexpr double kStandHold = 1.2;  // s
 
 // A limb a put-down leaves in the air this many times in a row ends the try
 // like a fall (stress seed 105: a foot hung 0.3 m up for 25 s, put down

@@ -163,9 +163,9 @@ class RiseController {
   float HandsAhead(const BodyReading& reading, Limb hand) const;
   // The same for the hands' middle.
   float HandsAhead(const BodyReading& reading) const;
-  // How far a foot is across the heading from its side of the crawl stance
-  // (kCrawlHalfStance beside the hands' midline), m.
-  float StanceDrift(const BodyReading& reading, Limb foot) const;
+  // How far `point` must move across the heading (toward the left, m) to lie
+  // on `foot`'s side of the crawl stance, kCrawlHalfStance beside the hands' midline.
+  float StanceAcross(const BodyReading& reading, Limb foot, const glm::vec3& point) const;
   // Ground hull of the contact points of every limb but one.
   SupportPolygon StanceWithout(const BodyReading& reading, Limb lifted) const;
   float CrawlComHeight(const BodyReading& reading) const;
@@ -177,6 +177,9 @@ class RiseController {
   bool LimbsReach(const Move& move, const PoseGoal& goal, BodyPose* solved = nullptr) const;
   // A move on both hands and both feet, all held where they are.
   Move OnAllFours(const BodyReading& reading, const char* name, double duration) const;
+  // Phase 2's move from the measured body: trunk upright over the feet, arms to the sides.
+  Move RiseMove(const BodyReading& reading) const;
+  // The rise's start: RiseMove, with the balance feedback begun afresh.
   Move PlanRise(const BodyReading& reading);
   std::array<float, 2> LegPitches(const BodyReading& reading, int leg) const;
   // The pelvis of a rising move at eased progress e: on the legs straightening from the feet.

@@ -61,11 +61,11 @@ float RiseController::HandsAhead(const BodyReading& r) const {
   return 0.5f * (HandsAhead(r, Limb::kHandLeft) + HandsAhead(r, Limb::kHandRight));
 }
 
-float RiseController::StanceDrift(const BodyReading& r, Limb foot) const {
+float RiseController::StanceAcross(const BodyReading& r, Limb foot, const glm::vec3& point) const {
   const glm::vec3 left = glm::normalize(glm::cross(kUp, heading_));
   const glm::vec3 hands = 0.5f * (ContactPoint(r, Limb::kHandLeft) + ContactPoint(r, Limb::kHandRight));
   const float side = IsLeft(foot) ? 1.0f : -1.0f;
-  return std::fabs(glm::dot(ContactPoint(r, foot) - hands, left) - side * kCrawlHalfStance);
+  return side * kCrawlHalfStance - glm::dot(point - hands, left);
 }
 
 std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
@@ -93,7 +93,8 @@ std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
   // and a body bent sideways as it came up, both feet off to one side of the
   // hands, walked its rear foot in and out until the time ran out while the
   // other stayed 0.7 m wide (stress seed 33).
-  const float driftLeft = StanceDrift(r, Limb::kFootLeft), driftRight = StanceDrift(r, Limb::kFootRight);
+  const float driftLeft = std::fabs(StanceAcross(r, Limb::kFootLeft, ContactPoint(r, Limb::kFootLeft)));
+  const float driftRight = std::fabs(StanceAcross(r, Limb::kFootRight, ContactPoint(r, Limb::kFootRight)));
   if (std::max(driftLeft, driftRight) > kMaxStanceDrift) return {driftLeft >= driftRight ? Limb::kFootLeft : Limb::kFootRight};
   // By the ankles, as the step length measures them (toe edges can sit askew).
   const float stagger = glm::dot(r.jointPositions[rig_.end[2]] - r.jointPositions[rig_.end[3]], heading_);
@@ -364,9 +365,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       const glm::vec3 toe = Project(ground_, r.jointPositions[rig_.end[i]] + m.toRotation * toeLocal_);
       // Back to the stance width either side of the hands' midline: feet that
       // keep their own line splay apart step by step.
-      const glm::vec3 hands = 0.5f * (ContactPoint(r, Limb::kHandLeft) + ContactPoint(r, Limb::kHandRight));
-      const float side = IsLeft(limb) ? 1.0f : -1.0f;
-      const glm::vec3 across = left * (side * kCrawlHalfStance - glm::dot(toe - hands, left));
+      const glm::vec3 across = left * StanceAcross(r, limb, toe);
       m.to = AnkleForToe(toe + heading_ * length + across, m.toRotation);
       m.lift = static_cast<float>(spec_.style.stepHeightM);
     }

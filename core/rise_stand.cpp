@@ -2,6 +2,7 @@
 // Phase 2: the rise from the squat with the CoM kept over the feet, and the
 // still stand it ends in.
 #include "core/rise_controller_detail.h"
+#include "base/assert.h"
 
 namespace rise {
 
@@ -33,7 +34,7 @@ glm::vec3 RiseController::RisingPelvis(const Move& move, float e, const BodyRead
   return pelvis;
 }
 
-RiseController::Move RiseController::PlanRise(const BodyReading& r) {
+RiseController::Move RiseController::RiseMove(const BodyReading& r) const {
   Move move;
   move.name = "rise";
   move.phase = RisePhase::kRise;
@@ -57,6 +58,11 @@ RiseController::Move RiseController::PlanRise(const BodyReading& r) {
     move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
     move.limbs[i].span = 0.5f;
   }
+  return move;
+}
+
+RiseController::Move RiseController::PlanRise(const BodyReading& r) {
+  Move move = RiseMove(r);
   balanceOffset_ = glm::vec3(0.0f);
   balanceLean_ = BalanceLean(move, 0.0f, r, 0.0f, kMaxBalanceLean);
   return move;
@@ -68,17 +74,10 @@ RiseController::Move RiseController::PlanStand(const BodyReading& r) {
   // goal went back to where the servos sagged to and the integral to zero, and
   // on a 10 deg cross-slope that jolted the CoM 2 cm sideways and back each
   // time: the body never came to rest.
-  const bool holding = hasMove_ && (move_.phase == RisePhase::kRise || move_.phase == RisePhase::kStand);
-  const glm::vec3 offset = balanceOffset_;
-  const float lean = balanceLean_;
-  const TrunkPose held = move_.to;
-  Move move = PlanRise(r);
-  if (holding) {
-    move.from = held;
-    move.legPitches = {};
-    balanceOffset_ = offset;
-    balanceLean_ = lean;
-  }
+  RISE_ASSERT(hasMove_ && (move_.phase == RisePhase::kRise || move_.phase == RisePhase::kStand));
+  Move move = RiseMove(r);
+  move.from = move_.to;
+  move.legPitches = {};
   move.name = "stand";
   move.phase = RisePhase::kStand;
   move.duration = 1.0;
