@@ -248,6 +248,7 @@ Biped::Biped(const BipedDef& def, physics::World& world, const BipedPose& pose, 
     joint.motor.stiffness = bone.servoKp;
     joint.motor.damping = bone.servoKd;
     joint.motor.maxTorque = bone.maxTorqueNm;
+    joint.motor.maxSpeed = bone.servoMaxSpeed > 0.0f ? bone.servoMaxSpeed : std::numeric_limits<float>::infinity();
     joints_[j] = world.CreateJoint(joint);
   }
   SetPose(pose);

@@ -65,6 +65,11 @@ constexpr float kThighGap = 0.01f;  // metres
 // follows as kp times this time constant. Starting points for the controller.
 constexpr float kServoSaturationRad = 0.3f;
 constexpr float kServoDampingTimeS = 0.08f;
+// Closing a large error (an arm left overhead, a leg swung from lying) at the
+// spring's own pace whipped hands and feet past 10 m/s; a joint closes it at
+// this speed at most, and errors under kServoMaxSpeed * kServoDampingTimeS
+// (in rad) are tracked as before.
+constexpr float kServoMaxSpeed = 12.0f;  // rad/s (8: prone starts passing every bar 141 -> 134 of 144; 12: 141, and 14 of 300 stress runs over the 10 m/s bound -> 6)
 
 struct Size {
   float length, width, depth, mass;
@@ -245,6 +250,7 @@ BipedDef MakeBipedDef(float heightM, float massKg, const SegmentOverrides& overr
     if (bone.maxTorqueNm > 0.0f) {
       bone.servoKp = bone.maxTorqueNm / kServoSaturationRad;
       bone.servoKd = bone.servoKp * kServoDampingTimeS;
+      bone.servoMaxSpeed = kServoMaxSpeed;
     }
     joints.push_back(joint);
     def.bones.push_back(std::move(bone));

@@ -84,6 +84,7 @@ struct BoneDef {
   float maxTorqueNm = 0.0f;    // servo torque cap per axis; 0 for the root and end joints
   float servoKp = 0.0f;        // default PD stiffness, N*m/rad
   float servoKd = 0.0f;        // default PD damping, N*m*s/rad
+  float servoMaxSpeed = 0.0f;  // rad/s the servo closes a large error at, at most
 };
 
 // Optional replacement of a segment's default box size or mass. length is along

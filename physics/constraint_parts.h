@@ -20,6 +20,9 @@
 //   gamma = 1 / (h (c + h k)),  beta = h k / (c + h k),
 // so each solve applies  dLambda = -(K + gamma)^-1 (Cdot + (beta/h) C + gamma (lambda - h tauFF)).
 // Being implicit, any k and c are stable; |lambda| is then clamped to maxTorque h.
+// Far from its target the spring asks for a relative speed of (beta/h) |C|; that bias is clamped
+// to maxSpeed in norm, so a large error is closed at a bounded speed instead of a whip, while a
+// small one (|C| < maxSpeed h / beta) is tracked as before.
 #pragma once
 
 #include "physics/body.h"
@@ -30,6 +33,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rise::physics {
 
@@ -183,6 +187,7 @@ struct MotorGains {
   float damping = 0.0f;        // c, N m s / rad
   float maxTorque = 0.0f;      // N m, clamp on the norm of the motor torque
   glm::vec3 feedForward{0.0f}; // N m, world, torque on B (A gets the opposite)
+  float maxSpeed = std::numeric_limits<float>::infinity();  // rad/s, clamp on the norm of the spring's bias
 };
 
 // The parts of a PD motor's solve over `count` (1..3) world axes that depend only on the poses,
@@ -206,7 +211,15 @@ inline MotorPartTerms MakeMotorPartTerms(const glm::mat3& invInertiaSum, const g
   terms.springy = true;
   terms.gamma = 1.0f / (h * kh);
   const float betaOverH = gains.stiffness / kh;
-  for (int i = 0; i < count; ++i) terms.bias[i] = betaOverH * c[i];
+  float biasNorm2 = 0.0f;
+  for (int i = 0; i < count; ++i) {
+    terms.bias[i] = betaOverH * c[i];
+    biasNorm2 += terms.bias[i] * terms.bias[i];
+  }
+  if (biasNorm2 > gains.maxSpeed * gains.maxSpeed) {
+    const float scale = gains.maxSpeed / std::sqrt(biasNorm2);
+    for (int i = 0; i < count; ++i) terms.bias[i] *= scale;
+  }
   // I^-1 u_j once per axis rather than once per entry of K.
   glm::vec3 inertiaAxes[3];
   for (int j = 0; j < count; ++j) inertiaAxes[j] = invInertiaSum * axes[j];

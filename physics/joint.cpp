@@ -51,7 +51,7 @@ glm::vec3 RotationVector(glm::quat q) {
 }
 
 MotorGains MotorGainsOf(const MotorDef& motor) {
-  return MotorGains{motor.stiffness, motor.damping, motor.maxTorque, motor.feedForwardTorque};
+  return MotorGains{motor.stiffness, motor.damping, motor.maxTorque, motor.feedForwardTorque, motor.maxSpeed};
 }
 
 // Sum of J^T lambda of all angular rows, as one world impulse on B.

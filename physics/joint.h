@@ -48,6 +48,7 @@ struct MotorDef {
   float damping = 0.0f;                      // kd, N m s / rad
   float maxTorque = std::numeric_limits<float>::infinity();  // N m, norm clamp incl. feed-forward
   glm::vec3 feedForwardTorque{0.0f};         // N m, world, on B (A gets the opposite)
+  float maxSpeed = std::numeric_limits<float>::infinity();  // rad/s the spring drives toward the target at most
 };
 
 struct JointId {

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 using namespace rise::physics;
@@ -220,5 +221,44 @@ TEST_SUITE("physics.joint") {
       CHECK(maxTorque <= 2.0f + 1e-4f);
       CHECK(maxAngle > 0.5f);  // swings well past horizontal: 2 N m cannot hold the 4.9 N m rod
     }
+  }
+
+  TEST_CASE_TEMPLATE("a PD motor's speed limit closes a large error at that speed, and a small one as before", T,
+                     RISE_JOINT_SOLVERS) {
+    WorldSettings settings = rise::test::WithJointSolver<T>();
+    settings.gravity = glm::vec3(0.0f);
+    MotorDef motor;
+    motor.enabled = true;
+    motor.stiffness = 400.0f;
+    motor.damping = 32.0f;
+    motor.maxTorque = 100.0f;
+    // The peak angular speed and the final angle of a swing to `target`.
+    auto swing = [&](float target, float maxSpeed) {
+      MotorDef m = motor;
+      m.target = glm::angleAxis(target, glm::vec3(1.0f, 0.0f, 0.0f));
+      m.maxSpeed = maxSpeed;
+      HingedRod rig(settings, m);
+      float peak = 0.0f;
+      for (int i = 0; i < 240 * 2; ++i) {
+        rig.world.Step();
+        peak = std::max(peak, glm::length(rig.world.GetAngularVelocity(rig.rod)));
+      }
+      return std::make_pair(peak, rig.Angle());
+    };
+    const float inf = std::numeric_limits<float>::infinity();
+    // A half turn: unlimited, the 100 N m motor whips the rod past 20 rad/s.
+    const auto [freePeak, freeEnd] = swing(2.5f, inf);
+    const auto [limitedPeak, limitedEnd] = swing(2.5f, 6.0f);
+    INFO("peak " << freePeak << " rad/s unlimited, " << limitedPeak << " rad/s limited to 6");
+    CHECK(freePeak > 15.0f);
+    CHECK(limitedPeak < 6.0f * 1.05f);
+    CHECK(limitedPeak > 6.0f * 0.9f);
+    CHECK(std::fabs(limitedEnd - 2.5f) < 1.0f * kDegree);
+    CHECK(std::fabs(freeEnd - 2.5f) < 1.0f * kDegree);
+    // An error the spring closes below the limit (12.5 rad/s per rad here) is untouched.
+    const auto [smallFree, smallFreeEnd] = swing(0.2f, inf);
+    const auto [smallLimited, smallLimitedEnd] = swing(0.2f, 6.0f);
+    CHECK(smallLimited == doctest::Approx(smallFree).epsilon(1e-6));
+    CHECK(smallLimitedEnd == doctest::Approx(smallFreeEnd).epsilon(1e-6));
   }
 }
