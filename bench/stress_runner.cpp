@@ -2,7 +2,8 @@
 // Stress runner (issue 8 §1): clips from seeded random inputs over the whole documented input range.
 //
 // Each run draws a custom lying pose (random root orientation, every joint angle uniform within
-// its limits, dropped from 0-1 m), a body of 1.4-2.1 m and 40-130 kg, a slope of 0-15 deg, friction
+// its limits, drawn again while limbs pass through each other deeper than the loader allows,
+// dropped from 0-1 m), a body of 1.4-2.1 m and 40-130 kg, a slope of 0-15 deg, friction
 // 0.3-1.2 and every style value uniform in its range; writes it as input-file JSON and loads it
 // through the CLI's validated loader, then runs GenerateClip on it. The clip is recorded at 240 fps,
 // the engine's own rate, so every simulated step is measured. Health asserted per run:
@@ -39,6 +40,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/biped.h"
 #include "core/clip_check.h"
 #include "core/clip_quality.h"
 #include "core/generate.h"
@@ -92,13 +94,26 @@ nlohmann::ordered_json RandomInput(uint64_t seed, double maxDuration) {
   const double height = Round3(Uniform(rng, 1.4, 2.1));
   const double mass = Round3(Uniform(rng, 40.0, 130.0));
   input["character"] = {{"height_m", height}, {"mass_kg", mass}};
-  nlohmann::ordered_json joints = nlohmann::ordered_json::object();
+  nlohmann::ordered_json joints;
   const rise::BipedDef def = rise::MakeBipedDef(static_cast<float>(height), static_cast<float>(mass));
-  for (int j = 0; j < def.skeleton.JointCount(); ++j) {
-    if (def.DofCount(j) == 0) continue;
-    nlohmann::ordered_json angles = nlohmann::ordered_json::array();
-    for (const rise::JointDof& dof : def.bones[j].dofs) angles.push_back(Round3(Uniform(rng, dof.minDeg, dof.maxDeg)));
-    joints[def.skeleton.joints[j].name] = angles;
+  // Drawn again while the limbs pass through each other deeper than the loader allows (about 1
+  // draw in 5): a body cannot start inside itself.
+  for (bool inside = true; inside;) {
+    joints = nlohmann::ordered_json::object();
+    rise::StartSpec start;
+    start.posture = rise::Posture::kCustom;
+    for (int j = 0; j < def.skeleton.JointCount(); ++j) {
+      if (def.DofCount(j) == 0) continue;
+      nlohmann::ordered_json angles = nlohmann::ordered_json::array();
+      std::vector<double>& drawn = start.jointsDeg[def.skeleton.joints[j].name];
+      for (const rise::JointDof& dof : def.bones[j].dofs) {
+        drawn.push_back(Round3(Uniform(rng, dof.minDeg, dof.maxDeg)));
+        angles.push_back(drawn.back());
+      }
+      joints[def.skeleton.joints[j].name] = angles;
+    }
+    const std::optional<rise::SelfOverlap> overlap = rise::DeepestSelfOverlap(def, rise::StartPose(def, start, 0.0));
+    inside = overlap && overlap->depthM > rise::kMaxStartOverlapM;
   }
   input["start"] = {
       {"posture", "custom"},

@@ -189,6 +189,29 @@ BipedPose StartPose(const BipedDef& def, const StartSpec& start, double slopeDeg
   return pose;
 }
 
+std::optional<SelfOverlap> DeepestSelfOverlap(const BipedDef& def, const BipedPose& pose) {
+  // The body alone in an empty world, stepped once: the step's contacts report their
+  // separations at its start, found by the same broad phase, filters and narrow phase as a clip.
+  physics::World world(BipedWorldSettings());
+  const Biped biped(def, world, pose, 0.0f);
+  world.Step();
+  std::optional<SelfOverlap> deepest;
+  std::vector<physics::ContactInfo> contacts;
+  for (int j = 0; j < def.skeleton.JointCount(); ++j) {
+    if (!def.skeleton.joints[j].hasBox) continue;
+    world.GetContacts(biped.BodyOf(j), contacts);
+    for (const physics::ContactInfo& contact : contacts) {
+      if (contact.separation >= 0.0f || (deepest && -contact.separation <= deepest->depthM)) continue;
+      for (int k = 0; k < def.skeleton.JointCount(); ++k) {
+        if (def.skeleton.joints[k].hasBox && biped.BodyOf(k).index == contact.otherBody.index) {
+          deepest = SelfOverlap{def.skeleton.joints[j].name, def.skeleton.joints[k].name, -contact.separation};
+        }
+      }
+    }
+  }
+  return deepest;
+}
+
 Biped::Biped(const BipedDef& def, physics::World& world, const BipedPose& pose, float friction)
     : def_(def), world_(&world) {
   const int count = def_.skeleton.JointCount();

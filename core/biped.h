@@ -21,6 +21,8 @@
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/biped_def.h"
@@ -56,6 +58,20 @@ BipedPose BindPose(const BipedDef& def);
 // moved along the ground normal so the lowest box corner is kGroundClearance + start.dropHeightM
 // above the ground. Postures are described in rise_spec.h.
 BipedPose StartPose(const BipedDef& def, const StartSpec& start, double slopeDeg);
+
+// Two boxes of the body that pass into each other in a pose, of the pairs the simulation
+// collides (limbs with limbs and with the head; the trunk's boxes pass through the limbs').
+struct SelfOverlap {
+  std::string boxA, boxB;  // the joints that carry them
+  float depthM = 0.0f;     // how far they pass into each other, > 0
+};
+// The deepest such overlap, as the engine's narrow phase measures it; none: nullopt. A start
+// pose that deep inside itself is pushed apart by the contacts at once, which whips the limbs.
+std::optional<SelfOverlap> DeepestSelfOverlap(const BipedDef& def, const BipedPose& pose);
+// The deepest a start pose may be (the input loader rejects deeper). Boxes are a coarse body: the
+// side postures' thighs overlap 3.5 cm and are pushed apart gently; the stress runs whipped by
+// the push began 6-16 cm deep.
+inline constexpr float kMaxStartOverlapM = 0.05f;
 
 // World transform of every skeleton joint frame for a pose (end joints included).
 std::vector<physics::Transform> JointWorldTransforms(const BipedDef& def, const BipedPose& pose);

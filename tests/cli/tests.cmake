@@ -110,6 +110,8 @@ rise_bad_input(angle_limit "start.joints_deg.shin_l\\[0\\]: found 200, allowed: 
   ${bad}/angle_limit.json -o c.glb)
 rise_bad_input(joint_unknown "start.joints_deg.tail: unknown joint \"tail\" allowed: abdomen, chest, head"
   ${bad}/joint_unknown.json -o c.glb)
+rise_bad_input(self_overlap "start.joints_deg: found a pose in which the thigh_l and thigh_r boxes pass 14.4 cm into each other"
+  ${bad}/self_overlap.json -o c.glb)
 # Read-only means no write permission bits: refused before the simulation, even when root runs it.
 rise_cli_test(bad_read_only_folder EXIT 2 REGEX "cannot write 'ro/c.glb': folder 'ro' is read-only"
   ARGS ${RISE_SAMPLES}/supine.json -o ro/c.glb ABSENT ro/c.glb ro/c.meta.json SETUP sh -c "mkdir ro && chmod a-w ro")

@@ -122,6 +122,30 @@ TEST_SUITE("biped") {
     CHECK_QUAT_NEAR(pose.local[def.Find("forearm_l")], glm::quat(1, 0, 0, 0), 1e-6f);
   }
 
+
+  TEST_CASE("self overlap: none standing, shallow in the lying postures, deep with the legs crossed through each other") {
+    const rise::BipedDef def = rise::MakeBipedDef(1.75f, 70.0f);
+    CHECK_FALSE(rise::DeepestSelfOverlap(def, rise::BindPose(def)).has_value());
+    for (const rise::Posture posture : kLying) {
+      const std::optional<rise::SelfOverlap> overlap = rise::DeepestSelfOverlap(def, rise::StartPose(def, Start(posture), 0.0));
+      CAPTURE(static_cast<int>(posture));
+      CHECK((!overlap || overlap->depthM <= rise::kMaxStartOverlapM));
+    }
+    rise::StartSpec start;
+    start.posture = rise::Posture::kCustom;
+    start.jointsDeg["thigh_l"] = {-19.0, -18.0};
+    start.jointsDeg["shin_l"] = {143.0};
+    start.jointsDeg["thigh_r"] = {-25.0, -15.0};
+    const std::optional<rise::SelfOverlap> crossed = rise::DeepestSelfOverlap(def, rise::StartPose(def, start, 0.0));
+    REQUIRE(crossed.has_value());
+    CHECK(crossed->boxA == "thigh_l");
+    CHECK(crossed->boxB == "thigh_r");
+    CHECK(crossed->depthM == doctest::Approx(0.144f).epsilon(0.05));
+    // The trunk's boxes pass through the limbs' by design: an arm folded into the chest is no overlap.
+    start.jointsDeg = {{"upper_arm_l", {0.0, -20.0}}};
+    const std::optional<rise::SelfOverlap> arm = rise::DeepestSelfOverlap(def, rise::StartPose(def, start, 0.0));
+    CHECK((!arm || arm->boxA.rfind("upper_arm", 0) != 0 || arm->boxB == "head"));
+  }
   TEST_CASE("the engine's joint angles read back as the skeleton local rotations of the pose") {
     const rise::BipedDef def = rise::MakeBipedDef(1.75f, 70.0f);
     rise::StartSpec start;

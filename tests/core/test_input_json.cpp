@@ -197,6 +197,11 @@ TEST_SUITE("input_json") {
           R"(in.json: output.names: found "unreal", allowed: default, mixamo, ue)");
     // 22. empty file
     CHECK(Contains(ErrorOf(""), "in.json:1:1: invalid JSON: "));
+    // 23. a start pose with the limbs through each other: the left leg crossed through the right
+    CHECK(ErrorOf(R"({"start": {"posture": "custom", "joints_deg": {"thigh_l": [-19, -18], "shin_l": [143],
+                  "thigh_r": [-25, -15]}}})") ==
+          "in.json: start.joints_deg: found a pose in which the thigh_l and thigh_r boxes pass 14.4 cm into each other, "
+          "allowed: at most 5 cm (a body cannot start inside itself; turn one of them clear)");
   }
 
   TEST_CASE("a missing file is an error naming the file") {
