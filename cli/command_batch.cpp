@@ -47,7 +47,7 @@ int Run(const BatchArgs& args) {
         "--library-glb: found with --shard, allowed: without it (run the shards first, then the same command "
         "without --shard: every clip is found up to date and the library files are written)");
   }
-  const std::string problem = CheckBatchOutDir(args.outDir);
+  const std::string problem = PrepareBatchOutDir(args.outDir);
   if (!problem.empty()) return ReportError(problem);
 
   BatchOptions options;
@@ -113,7 +113,7 @@ Command AddBatchCommand(CLI::App& app) {
       "Exit codes: 0 every clip ok; 1 a clip failed or errored, or Ctrl-C; 2 bad manifest, option,\n"
       "missing output folder or I/O error.\n");
   sub->add_option("manifest", args->manifest, "The library manifest (JSON; see samples/library.json)")->required();
-  sub->add_option("-o,--output", args->outDir, "Output folder; it must exist")->required();
+  sub->add_option("-o,--output", args->outDir, "Output folder; made if missing")->required();
   sub->add_option("-j,--jobs", args->jobs, "Clips simulated at once (default: one per hardware thread)")
       ->check(CLI::Range(1, 1024));
   sub->add_option("--shard", args->shard,

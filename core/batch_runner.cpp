@@ -49,7 +49,7 @@ ClipFiles FilesOf(const LibraryManifest& manifest, const ManifestClip& clip, con
   return files;
 }
 
-// The clip's files are on disk and were made from this very input.
+// The clip's files are on disk and were made from this very input by this very version.
 bool UpToDate(const ClipFiles& files, const std::string& inputHash) {
   std::error_code ec;
   for (const std::string& file : files.all) {
@@ -57,7 +57,7 @@ bool UpToDate(const ClipFiles& files, const std::string& inputHash) {
   }
   const Result<std::string> text = ReadInputFile(files.sidecar);
   ClipMetadata metadata;
-  return text && MetadataFromJson(text.Value(), metadata).empty() &&
+  return text && MetadataFromJson(text.Value(), metadata).empty() && metadata.generatorVersion == RISE_VERSION &&
          InputHashOfJson(metadata.parametersJson) == inputHash;
 }
 
@@ -206,10 +206,15 @@ std::string WriteLibraries(const LibraryManifest& manifest, const std::vector<si
 
 }  // namespace
 
-std::string CheckBatchOutDir(const std::string& outDir) {
+std::string PrepareBatchOutDir(const std::string& outDir) {
   std::error_code ec;
   if (outDir.empty()) return "empty output folder";
-  if (!fs::is_directory(outDir, ec)) return outDir + ": folder does not exist (rise-gen does not create folders)";
+  // Shards of one library started together make the same folder at once: one of them wins, and
+  // for the others it then exists, which is all that is asked.
+  fs::create_directories(outDir, ec);
+  if (!fs::is_directory(outDir)) {
+    return outDir + ": cannot make the output folder" + (ec ? " (" + ec.message() + ")" : std::string(" (a file is in the way)"));
+  }
   return CheckWritable((fs::path(outDir) / "index.json").string());
 }
 

@@ -8,8 +8,9 @@
 //   byte-identical files.
 // - One clip failing (simulation unhealthy, quality bars missed, a write error) never stops the
 //   others; its index entry says what went wrong.
-// - Resume: a clip whose files all exist and whose sidecar holds the same input (InputHash) is
-//   not generated again. Index entries are measured from the files on disk either way, so a
+// - Resume: a clip whose files all exist and whose sidecar holds the same input (InputHash) and
+//   names this rise-gen version as its generator is not generated again (a new version may move
+//   differently from the same input, so it makes its clips anew). Index entries are measured from the files on disk either way, so a
 //   resumed run writes the same index as a fresh one.
 // - The index is rewritten atomically after every finished clip, so it is valid whenever the run
 //   stops (Ctrl-C via `stop`, or a crash); clips not run yet are listed as "pending".
@@ -64,8 +65,10 @@ struct BatchReport {
   nlohmann::ordered_json index;
 };
 
-// "" when outDir is an existing, writable folder, otherwise why it cannot be used.
-std::string CheckBatchOutDir(const std::string& outDir);
+// Makes outDir (and its missing parents) if it does not exist yet; "" when it is then a writable
+// folder, otherwise why it cannot be used. Called once the manifest is known to be good, so a bad
+// manifest leaves nothing behind.
+std::string PrepareBatchOutDir(const std::string& outDir);
 
 // Runs the clips manifest.clips[i] for i in `selection` (ascending; e.g. ShardClips).
 BatchReport RunBatch(const LibraryManifest& manifest, const std::vector<size_t>& selection,

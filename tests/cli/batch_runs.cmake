@@ -7,8 +7,8 @@
 #                       command without --shard then finds all up to date and writes the same
 #                       index.json and library files as the full run
 #   -DRISE_GEN=path -DMANIFEST=path -DWORKDIR=dir
+# The folders do not exist before their first run: rise-gen batch makes them.
 file(REMOVE_RECURSE ${WORKDIR})
-file(MAKE_DIRECTORY ${WORKDIR}/full ${WORKDIR}/other)
 
 function(batch dir)
   execute_process(COMMAND ${RISE_GEN} batch ${MANIFEST} -o ${dir} --previews ${ARGN}

@@ -140,7 +140,8 @@ rise_bad_batch(style_name "cross.styles\\[0\\]: missing key \"name\"" ${bad}/man
 rise_bad_batch(body_mismatch "clips\\[1\\]: clip \"c\" of body \"b\" has another character" ${bad}/manifest_body_mismatch.json -o out)
 rise_bad_batch(shard "--shard: found \"2/2\", allowed: I/N with 0 <= I < N" ${tiny} -o out --shard 2/2)
 rise_bad_batch(shard_library "--library-glb: found with --shard" ${tiny} -o out --shard 0/2 --library-glb)
-rise_bad_batch(out_folder "missing: folder does not exist" ${tiny} -o missing)
+rise_cli_test(bad_batch_out_folder EXIT 2 REGEX "taken: cannot make the output folder"
+  ARGS batch ${tiny} -o taken SETUP ${CMAKE_COMMAND} -E touch taken)
 rise_bad_batch(jobs "--jobs: Value 0 not in range" ${tiny} -o out --jobs 0)
 rise_cli_test(bad_batch_read_only EXIT 2 REGEX "cannot write 'ro/index.json': folder 'ro' is read-only"
   ARGS batch ${tiny} -o ro ABSENT ro/index.json SETUP sh -c "mkdir ro && chmod a-w ro")

@@ -125,6 +125,21 @@ TEST_SUITE("batch_runner") {
     CHECK(changed.progress.skipped == 2);
     CHECK(changed.index["clips"][0]["input"]["seed"] == 5);
     CHECK(changed.index["clips"][1] == first.index["clips"][1]);
+
+    // A clip another rise-gen version made is made anew: the same input may move otherwise now.
+    const fs::path sidecar = fs::path(options.outDir) / changed.index["clips"][1]["files"]["metadata"].get<std::string>();
+    std::string text;
+    {
+      std::ifstream in(sidecar);
+      text.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    const std::string generator = "\"rise-gen " RISE_VERSION "\"";
+    REQUIRE(text.find(generator) != std::string::npos);
+    text.replace(text.find(generator), generator.size(), "\"rise-gen 0.0.0-old\"");
+    std::ofstream(sidecar) << text;
+    const rise::BatchReport upgraded = rise::RunBatch(manifest, All(manifest), options);
+    CHECK(upgraded.progress.skipped == 2);
+    CHECK(upgraded.index == changed.index);
   }
 
   TEST_CASE("a rerun after a killed run clears the temporaries it left") {
@@ -189,9 +204,15 @@ TEST_SUITE("batch_runner") {
     CHECK_FALSE(fs::exists(fs::path(options.outDir) / "small_side.glb"));
   }
 
-  TEST_CASE("the output folder must exist") {
-    CHECK(rise::CheckBatchOutDir(Folder("exists")).empty());
-    CHECK(rise::CheckBatchOutDir("no/such/folder") ==
-          "no/such/folder: folder does not exist (rise-gen does not create folders)");
+  TEST_CASE("the output folder is made with its missing parents; a file in the way is an error") {
+    const std::string base = Folder("prepare");
+    CHECK(rise::PrepareBatchOutDir(base).empty());
+    const fs::path nested = fs::path(base) / "library" / "v1";
+    CHECK(rise::PrepareBatchOutDir(nested.string()).empty());
+    CHECK(fs::is_directory(nested));
+    std::ofstream(fs::path(base) / "taken") << "a file";
+    const std::string blocked = (fs::path(base) / "taken").string();
+    CHECK(rise::PrepareBatchOutDir(blocked).rfind(blocked + ": cannot make the output folder", 0) == 0);
+    CHECK(rise::PrepareBatchOutDir("").rfind("empty output folder", 0) == 0);
   }
 }
