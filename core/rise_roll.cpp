@@ -15,6 +15,8 @@ constexpr float kTuckedLeg = 0.8f;
 // ... and its foot no higher than this over the ground: the push off presses it down.
 constexpr float kTuckedClearance = 0.2f;  // m
 constexpr float kChestOverRoll = glm::radians(125.0f);
+// How far past kChestOverRoll the chest of a roll's "over" move aims.
+constexpr float kOverLead = glm::radians(5.0f);
 constexpr float kProneRoll = glm::radians(135.0f);
 
 // Shoulder flexion past which an arm lies overhead.
@@ -188,11 +190,19 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       // 45, elbow 90 deg, its hand slid 14-16 cm as the chest came down onto
       // the front: 12 of 12 side_left starts; alongside, 4 slid 5-6 cm). A foot
       // still planted from the push holds the pelvis from falling back, so the
-      // chest can lead by the spine's full twist.
+      // chest can lead by the spine's full twist. Without it the chest leads at
+      // least 30 deg and at least as far as takes it kOverLead past
+      // kChestOverRoll, where the lie follows: led by 30 deg alone from a pelvis
+      // on its side (90 deg), its goal (~120) fell short of the lie's 125, and
+      // side starts repeated "over" 7 times (5 s) while it crept there; in
+      // stress 300 (seeds 1-300) some rolls stalled so until their moves ran
+      // out. With the lead, stress 300 stood 81 -> 102, side_left 48 stood 0.3 s
+      // sooner (their slides, already over the bar, 6.4 -> 7.6 cm on average).
       move.name = "over";
       move.duration = 0.9;
       const bool pushing = planted_[static_cast<int>(farLeg)];
-      move.to = RolledTrunk(r, 0.0f, glm::radians(pushing ? 65.0f : 30.0f));
+      const float lead = std::clamp(kChestOverRoll + kOverLead - pelvisRoll, glm::radians(30.0f), glm::radians(65.0f));
+      move.to = RolledTrunk(r, 0.0f, pushing ? glm::radians(65.0f) : lead);
       set(farArm, swing(farArm, {0, 10, 10, 0, 0}));
       set(farLeg, pushing ? HoldLimb(r, farLeg, true) : swing(farLeg, {40, -10, 60, -20, 0}));
       // The near leg straightens under the turning pelvis with a lift: held to
