@@ -306,14 +306,18 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   // is the farthest toward the goal (up to a full step) that the body can
   // reach with every limb from one trunk pose.
   shiftTries_ = 0;
-  ++crawlSteps_;
   const Limb limb = *step;
   const int i = static_cast<int>(limb);
   const glm::vec3 left = glm::normalize(glm::cross(kUp, heading_));
   Move best;
-  // A limb left in the air by a short step only goes down where it is.
+  // A limb left in the air by a short step only goes down where it is. That
+  // finishes the step, so it is not counted as one of the crawl's steps (its
+  // own limit is kMaxPutDowns): counted, a high-stepping body whose every foot
+  // step ended in the air got half as far as kMaxCrawlSteps meant and rose
+  // with its CoM 0.3 m short of its feet (stress seed 2).
   const bool putDown = Clearance(r, limb) > kLandedClearance;
   putDowns_ = putDown ? putDowns_ + 1 : 0;
+  if (!putDown) ++crawlSteps_;
   static constexpr std::array<float, 5> kFractions{1.0f, 0.75f, 0.5f, 0.3f, 0.15f};
   float nominalFootStep = 0.0f;
   // A foot steps with the CoM held at FootLiftCom; if no step length is
