@@ -212,7 +212,8 @@ std::string PrepareBatchOutDir(const std::string& outDir) {
   // Shards of one library started together make the same folder at once: one of them wins, and
   // for the others it then exists, which is all that is asked.
   fs::create_directories(outDir, ec);
-  if (!fs::is_directory(outDir)) {
+  std::error_code statError;
+  if (!fs::is_directory(outDir, statError)) {
     return outDir + ": cannot make the output folder" + (ec ? " (" + ec.message() + ")" : std::string(" (a file is in the way)"));
   }
   return CheckWritable((fs::path(outDir) / "index.json").string());

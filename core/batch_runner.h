@@ -10,8 +10,8 @@
 //   others; its index entry says what went wrong.
 // - Resume: a clip whose files all exist and whose sidecar holds the same input (InputHash) and
 //   names this rise-gen version as its generator is not generated again (a new version may move
-//   differently from the same input, so it makes its clips anew). Index entries are measured from the files on disk either way, so a
-//   resumed run writes the same index as a fresh one.
+//   differently from the same input, so it makes its clips anew). Index entries are measured
+//   from the files on disk either way, so a resumed run writes the same index as a fresh one.
 // - The index is rewritten atomically after every finished clip, so it is valid whenever the run
 //   stops (Ctrl-C via `stop`, or a crash); clips not run yet are listed as "pending".
 //

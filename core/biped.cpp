@@ -202,14 +202,18 @@ std::optional<SelfOverlap> DeepestSelfOverlap(const BipedDef& def, const BipedPo
     world.GetContacts(biped.BodyOf(j), contacts);
     for (const physics::ContactInfo& contact : contacts) {
       if (contact.separation >= 0.0f || (deepest && -contact.separation <= deepest->depthM)) continue;
-      for (int k = 0; k < def.skeleton.JointCount(); ++k) {
-        if (def.skeleton.joints[k].hasBox && biped.BodyOf(k).index == contact.otherBody.index) {
-          deepest = SelfOverlap{def.skeleton.joints[j].name, def.skeleton.joints[k].name, -contact.separation};
-        }
-      }
+      const int k = biped.JointOfBody(contact.otherBody.index);
+      if (k >= 0) deepest = SelfOverlap{def.skeleton.joints[j].name, def.skeleton.joints[k].name, -contact.separation};
     }
   }
   return deepest;
+}
+
+int Biped::JointOfBody(int32_t bodyIndex) const {
+  for (int j = 0; j < def_.skeleton.JointCount(); ++j) {
+    if (bodies_[j].IsValid() && bodies_[j].index == bodyIndex) return j;
+  }
+  return -1;
 }
 
 Biped::Biped(const BipedDef& def, physics::World& world, const BipedPose& pose, float friction)

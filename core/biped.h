@@ -91,6 +91,8 @@ class Biped {
 
   // Engine ids by skeleton joint index: invalid for end joints (no body) and for the root (no joint).
   physics::BodyId BodyOf(int joint) const { return bodies_[joint]; }
+  // The joint whose box is the engine's body `bodyIndex`; -1 when none is.
+  int JointOfBody(int32_t bodyIndex) const;
   physics::JointId JointOf(int joint) const { return joints_[joint]; }
 
   // Moves every body to a pose with zero velocity (e.g. to restart an attempt).

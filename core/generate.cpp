@@ -66,10 +66,8 @@ struct ContactTracker {
 };
 
 std::string Describe(const physics::StepStatus& status, double time, const Biped& biped) {
-  std::string body = "?";
-  for (int j = 0; j < biped.Def().skeleton.JointCount(); ++j) {
-    if (biped.BodyOf(j).index == status.firstBadBody) body = biped.Def().skeleton.joints[j].name;
-  }
+  const int joint = biped.JointOfBody(status.firstBadBody);
+  const std::string body = joint >= 0 ? biped.Def().skeleton.joints[joint].name : "?";
   char text[200];
   std::snprintf(text, sizeof text, "simulation became unstable at %.3f s (%s in body '%s')", time,
                 (status.flags & physics::kStepNonFinite) ? "non-finite state" : "speed over the health limit",
