@@ -283,6 +283,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
   }
 
   if (hasMove_ && (move_.name == "sit back" || move_.name == "heels down")) ReleaseLiftedHands(reading);
+  if (hasMove_ && move_.phase == RisePhase::kRise) LetGoOverFeet(reading);
   // The pose to track.
   out.local.assign(def_.skeleton.joints.size(), glm::quat(1, 0, 0, 0));
   out.gainScale.assign(def_.skeleton.joints.size(), 1.0f);

@@ -234,6 +234,12 @@ class RiseController {
   void HoldAloftUntilOver(const Move& move, const BodyReading& reading, PoseGoal& goal) const;
   // A planted hand that sitting back lifts off the ground goes straight up from where it is.
   void ReleaseLiftedHands(const BodyReading& reading);
+  // The rise's hands, held where they are planted, go to the sides once the
+  // CoM is over the soles (or the hand has left the ground).
+  void LetGoOverFeet(const BodyReading& reading);
+  // A hand's move from where it is to its place at the side in the bind pose,
+  // starting at fraction delay of the move.
+  LimbMove ArmToSide(const BodyReading& reading, int hand, float delay) const;
   void StartMove(Move move);
   bool Fallen(const BodyReading& reading) const;
   // Crouched or standing on both feet with the CoM over them (sets the heading).
