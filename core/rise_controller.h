@@ -239,7 +239,7 @@ class RiseController {
   void LetGoOverFeet(const BodyReading& reading);
   // A hand's move from where it is to its place at the side in the bind pose,
   // starting at fraction delay of the move.
-  LimbMove ArmToSide(const BodyReading& reading, int hand, float delay) const;
+  LimbMove ArmToSide(const BodyReading& reading, Limb hand, float delay) const;
   void StartMove(Move move);
   bool Fallen(const BodyReading& reading) const;
   // Crouched or standing on both feet with the CoM over them (sets the heading).

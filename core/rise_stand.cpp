@@ -44,15 +44,7 @@ RiseController::Move RiseController::RiseMove(const BodyReading& r) const {
   move.from = MeasuredTrunk(r);
   move.to.pelvisRotation = move.to.chestRotation = TrunkRotation(heading_, 0.5f * kPi);
   move.to.pelvis = FeetCentre(r) + kUp * standPelvisHeight_ * 0.985f;
-  // A squat that starts its rise with the CoM short of the soles keeps its
-  // hands down until the rise's balance has brought it over them
-  // (LetGoOverFeet). Let go at once, such squats on a 10 deg slope tipped
-  // forward onto their faces (prone_variants 48 on 10 deg: 21 -> 25 stand;
-  // tired prone 144: 129 -> 137; stress 600: 198 -> 205).
-  const bool shortOfSoles = FeetRegion(r).SignedDistance(Ground(r.com)) > 0.0f;
-  for (int i = 0; i < 2; ++i) {
-    move.limbs[i] = shortOfSoles && r.touching[i] ? HoldLimb(r, static_cast<Limb>(i), true) : ArmToSide(r, i, 0.0f);
-  }
+  for (int i = 0; i < 2; ++i) move.limbs[i] = ArmToSide(r, static_cast<Limb>(i), 0.0f);
   for (int i = 2; i < 4; ++i) {
     move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
     move.limbs[i].span = 0.5f;
@@ -60,7 +52,8 @@ RiseController::Move RiseController::RiseMove(const BodyReading& r) const {
   return move;
 }
 
-RiseController::LimbMove RiseController::ArmToSide(const BodyReading& r, int hand, float delay) const {
+RiseController::LimbMove RiseController::ArmToSide(const BodyReading& r, Limb limb, float delay) const {
+  const int hand = static_cast<int>(limb);
   LimbMove m;
   const glm::quat chest = r.jointRotations[rig_.chest];
   m.mode = LimbMode::kBody;
@@ -74,16 +67,27 @@ RiseController::LimbMove RiseController::ArmToSide(const BodyReading& r, int han
 }
 
 void RiseController::LetGoOverFeet(const BodyReading& r) {
+  auto held = [&](int i) { return move_.limbs[i].mode == LimbMode::kWorld && move_.limbs[i].planted; };
+  // This runs every step of the rise: the feet's polygon only while a hand is held.
+  if (!held(0) && !held(1)) return;
   const bool overSoles = FeetRegion(r).SignedDistance(Ground(r.com)) < 0.0f;
   for (int i = 0; i < 2; ++i) {
-    const LimbMove& m = move_.limbs[i];
-    if (m.mode != LimbMode::kWorld || !m.planted || (!overSoles && r.touching[i])) continue;
-    move_.limbs[i] = ArmToSide(r, i, std::min(progress_, 0.9f));
+    if (held(i) && (overSoles || !r.touching[i])) move_.limbs[i] = ArmToSide(r, static_cast<Limb>(i), std::min(progress_, 0.9f));
   }
 }
 
 RiseController::Move RiseController::PlanRise(const BodyReading& r) {
   Move move = RiseMove(r);
+  // A squat that starts its rise with the CoM short of the soles keeps its
+  // hands down until the rise's balance has brought it over them
+  // (LetGoOverFeet). Let go at once, such squats on a 10 deg slope tipped
+  // forward onto their faces (prone_variants 48 on 10 deg: 21 -> 25 stand;
+  // tired prone 144: 129 -> 137; stress 600: 198 -> 205).
+  if (FeetRegion(r).SignedDistance(Ground(r.com)) > 0.0f) {
+    for (int i = 0; i < 2; ++i) {
+      if (r.touching[i]) move.limbs[i] = HoldLimb(r, static_cast<Limb>(i), true);
+    }
+  }
   balanceOffset_ = glm::vec3(0.0f);
   balanceLean_ = BalanceLean(move, 0.0f, r, 0.0f, kMaxBalanceLean);
   return move;
