@@ -148,6 +148,7 @@ RiseController::Move RiseController::PlanPush(const BodyReading& r) {
   const glm::vec3 wrists = 0.5f * (move.limbs[0].to + move.limbs[1].to);
   const glm::vec3 comGoal = Project(ground_, glm::mix(wrists, ankles, 0.35f)) + kUp * crawlComHeight_;
   PlanTrunk(move, comGoal, {true, true});
+  placeTries_ = 0;
   crawlSteps_ = 0;
   shiftTries_ = 0;
   stepSpot_ = {};

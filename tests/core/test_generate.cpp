@@ -458,6 +458,39 @@ TEST_CASE("phase 1: a hand or foot its hip or shoulder cannot put down ends the 
   CHECK(longest < 6.0);
 }
 
+TEST_CASE("phase 0: a face-down start with an arm overhead brings it out round the side before the hands are placed") {
+  // Stress seed 107 (issue 8): lying face down with the right arm overhead,
+  // the place swung that hand toward its spot under the shoulder, the bent
+  // elbow pressed into the ground, and the push started with the hand 12 cm
+  // up; pushed up on one hand the body tipped over and had no time left to
+  // stand. Now the arm comes out round the side first, as at a roll's end.
+  const auto spec = rise::ParseRiseSpec(
+      R"({"character":{"height_m":1.536,"mass_kg":55.924},"seed":107,"start":{"drop_height_m":0.193,"joints_deg":{"abdomen":[42.333,-24.59,9.616],"chest":[-2.702,12.603,16.489],"foot_l":[-28.72,6.128],"foot_r":[10.296,-13.004],"forearm_l":[1.197],"forearm_r":[43.895],"hand_l":[36.129,6.953],"hand_r":[-48.626,-5.284],"head":[-42.725,-22.921,10.337],"shin_l":[31.55],"shin_r":[122.428],"thigh_l":[-13.884,29.559],"thigh_r":[103.0,-25.474],"upper_arm_l":[75.004,5.585],"upper_arm_r":[86.365,46.634]},"posture":"custom","root_euler_deg":[-158.61,172.344,160.586]},"style":{"look_around":0.693,"speed":2.211,"stance_width_m":0.43,"step_height_m":0.221,"sway":0.901,"tiredness":0.768},"terrain":{"friction":1.082,"slope_deg":4.175}})",
+      "start.json");
+  REQUIRE(spec.IsOk());
+  rise::GenerateSettings settings;
+  settings.keepTrace = true;
+  const rise::GeneratedClip result = rise::GenerateClip(spec.Value(), settings);
+  REQUIRE_FALSE(result.trace.empty());
+  int pushes = 0;
+  bool armOut = false;
+  std::string previous;
+  for (const rise::TraceSample& sample : result.trace) {
+    armOut = armOut || (sample.move == "arm out" && sample.phase == rise::RisePhase::kRoll);
+    if (sample.move == "push" && previous != "push") {
+      ++pushes;
+      INFO("push at " << sample.time << " s");
+      CHECK(sample.touching[0]);
+      CHECK(sample.touching[1]);
+    }
+    previous = sample.move;
+  }
+  INFO(result.outcome);
+  CHECK(armOut);
+  CHECK(pushes >= 1);
+  CHECK(result.stood);
+}
+
 TEST_CASE("phase 1: a hand or foot comes down from above its spot, not while still travelling along the ground") {
   // Prone starts of the notes harness (heading k*37 deg, seed k+1) in which a
   // swing lagging its path touched down at 1.4-2.8 m/s and slid; a swing is now
