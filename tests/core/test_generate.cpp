@@ -24,6 +24,15 @@ rise::RiseSpec ProneSpec(double seconds) {
   return spec;
 }
 
+// The clip of an input file's text (which must load), with its debug trace kept.
+rise::GeneratedClip GenerateTraced(const char* text) {
+  const auto spec = rise::ParseRiseSpec(text, "start.json");
+  REQUIRE(spec.IsOk());
+  rise::GenerateSettings settings;
+  settings.keepTrace = true;
+  return rise::GenerateClip(spec.Value(), settings);
+}
+
 bool SameClip(const rise::Clip& a, const rise::Clip& b) {
   if (a.FrameCount() != b.FrameCount() || a.rotations.size() != b.rotations.size()) return false;
   if (std::memcmp(a.rootTranslation.data(), b.rootTranslation.data(), a.rootTranslation.size() * sizeof(glm::vec3))) {
@@ -341,11 +350,7 @@ TEST_CASE("on a slope facing uphill the body stands upright, balanced along grav
   for (const char* text : {R"({"start":{"posture":"prone"},"terrain":{"slope_deg":8,"friction":0.9}})",
                            R"({"start":{"posture":"prone"},"terrain":{"slope_deg":10,"friction":0.9}})"}) {
     INFO(std::string(text));
-    const auto spec = rise::ParseRiseSpec(text, "start.json");
-    REQUIRE(spec.IsOk());
-    rise::GenerateSettings settings;
-    settings.keepTrace = true;
-    const rise::GeneratedClip result = rise::GenerateClip(spec.Value(), settings);
+    const rise::GeneratedClip result = GenerateTraced(text);
     REQUIRE(result.stood);
     const rise::QualityReport quality = rise::MeasureClip(result.clip, rise::QualityOptionsFor(result.clip));
     INFO("lying " << quality.startsLying << " standing " << quality.endsStanding << " ground " << quality.penetrationOk
@@ -436,13 +441,8 @@ TEST_CASE("phase 1: a hand or foot its hip or shoulder cannot put down ends the 
   // again toward a spot its hip could not take it to, for 25 s, until the
   // time ran out. Now a second put-down goes straight down with the CoM held,
   // and a fifth in a row counts as a failed try, which is retried.
-  const auto spec = rise::ParseRiseSpec(
-      R"({"character":{"height_m":1.801,"mass_kg":95.133},"seed":105,"start":{"drop_height_m":0.737,"joints_deg":{"abdomen":[-20.733,-10.335,6.318],"chest":[28.437,5.031,-30.249],"foot_l":[-11.708,-5.892],"foot_r":[3.016,-17.164],"forearm_l":[63.657],"forearm_r":[34.87],"hand_l":[40.449,14.523],"hand_r":[-36.618,-22.575],"head":[-10.158,-13.085,-23.862],"shin_l":[33.147],"shin_r":[10.756],"thigh_l":[20.112,40.414],"thigh_r":[37.841,40.737],"upper_arm_l":[91.821,84.709],"upper_arm_r":[74.613,-16.903]},"posture":"custom","root_euler_deg":[-145.394,152.449,-17.719]},"style":{"look_around":0.575,"speed":1.134,"stance_width_m":0.372,"step_height_m":0.182,"sway":0.389,"tiredness":0.37},"terrain":{"friction":0.922,"slope_deg":6.48}})",
-      "start.json");
-  REQUIRE(spec.IsOk());
-  rise::GenerateSettings settings;
-  settings.keepTrace = true;
-  const rise::GeneratedClip result = rise::GenerateClip(spec.Value(), settings);
+  const rise::GeneratedClip result = GenerateTraced(
+      R"({"character":{"height_m":1.801,"mass_kg":95.133},"seed":105,"start":{"drop_height_m":0.737,"joints_deg":{"abdomen":[-20.733,-10.335,6.318],"chest":[28.437,5.031,-30.249],"foot_l":[-11.708,-5.892],"foot_r":[3.016,-17.164],"forearm_l":[63.657],"forearm_r":[34.87],"hand_l":[40.449,14.523],"hand_r":[-36.618,-22.575],"head":[-10.158,-13.085,-23.862],"shin_l":[33.147],"shin_r":[10.756],"thigh_l":[20.112,40.414],"thigh_r":[37.841,40.737],"upper_arm_l":[91.821,84.709],"upper_arm_r":[74.613,-16.903]},"posture":"custom","root_euler_deg":[-145.394,152.449,-17.719]},"style":{"look_around":0.575,"speed":1.134,"stance_width_m":0.372,"step_height_m":0.182,"sway":0.389,"tiredness":0.37},"terrain":{"friction":0.922,"slope_deg":6.48}})");
   REQUIRE_FALSE(result.trace.empty());
   double longest = 0.0;
   for (int limb = 0; limb < rise::kLimbCount; ++limb) {
@@ -464,13 +464,8 @@ TEST_CASE("phase 0: a face-down start with an arm overhead brings it out round t
   // elbow pressed into the ground, and the push started with the hand 12 cm
   // up; pushed up on one hand the body tipped over and had no time left to
   // stand. Now the arm comes out round the side first, as at a roll's end.
-  const auto spec = rise::ParseRiseSpec(
-      R"({"character":{"height_m":1.536,"mass_kg":55.924},"seed":107,"start":{"drop_height_m":0.193,"joints_deg":{"abdomen":[42.333,-24.59,9.616],"chest":[-2.702,12.603,16.489],"foot_l":[-28.72,6.128],"foot_r":[10.296,-13.004],"forearm_l":[1.197],"forearm_r":[43.895],"hand_l":[36.129,6.953],"hand_r":[-48.626,-5.284],"head":[-42.725,-22.921,10.337],"shin_l":[31.55],"shin_r":[122.428],"thigh_l":[-13.884,29.559],"thigh_r":[103.0,-25.474],"upper_arm_l":[75.004,5.585],"upper_arm_r":[86.365,46.634]},"posture":"custom","root_euler_deg":[-158.61,172.344,160.586]},"style":{"look_around":0.693,"speed":2.211,"stance_width_m":0.43,"step_height_m":0.221,"sway":0.901,"tiredness":0.768},"terrain":{"friction":1.082,"slope_deg":4.175}})",
-      "start.json");
-  REQUIRE(spec.IsOk());
-  rise::GenerateSettings settings;
-  settings.keepTrace = true;
-  const rise::GeneratedClip result = rise::GenerateClip(spec.Value(), settings);
+  const rise::GeneratedClip result = GenerateTraced(
+      R"({"character":{"height_m":1.536,"mass_kg":55.924},"seed":107,"start":{"drop_height_m":0.193,"joints_deg":{"abdomen":[42.333,-24.59,9.616],"chest":[-2.702,12.603,16.489],"foot_l":[-28.72,6.128],"foot_r":[10.296,-13.004],"forearm_l":[1.197],"forearm_r":[43.895],"hand_l":[36.129,6.953],"hand_r":[-48.626,-5.284],"head":[-42.725,-22.921,10.337],"shin_l":[31.55],"shin_r":[122.428],"thigh_l":[-13.884,29.559],"thigh_r":[103.0,-25.474],"upper_arm_l":[75.004,5.585],"upper_arm_r":[86.365,46.634]},"posture":"custom","root_euler_deg":[-158.61,172.344,160.586]},"style":{"look_around":0.693,"speed":2.211,"stance_width_m":0.43,"step_height_m":0.221,"sway":0.901,"tiredness":0.768},"terrain":{"friction":1.082,"slope_deg":4.175}})");
   REQUIRE_FALSE(result.trace.empty());
   int pushes = 0;
   bool armOut = false;
