@@ -145,7 +145,8 @@ class RiseController {
   TrunkPose RolledTrunk(const BodyReading& reading, float angle, float twist) const;
   // After a roll, an arm lying overhead comes out to the side (kArmOut), then
   // turns there to be swung down beside the chest (kArmTurn); none to move: nullopt.
-  std::optional<Move> PlanArmOut(const BodyReading& reading, RollStage stage) const;
+  // raisedOnly: the arms whose hands are off the ground come out, wherever they lie.
+  std::optional<Move> PlanArmOut(const BodyReading& reading, RollStage stage, bool raisedOnly = false) const;
   Move PlanPlace(const BodyReading& reading);
   Move PlanHandsDown(const BodyReading& reading) const;  // the hands left hovering by the place come straight down
   Move PlanPush(const BodyReading& reading);

@@ -249,7 +249,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   return move;
 }
 
-std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading& r, RollStage stage) const {
+std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading& r, RollStage stage, bool raisedOnly) const {
   // The arm the body rolled over lies overhead. Swung from there straight to
   // beside the chest it sweeps through the ground, and ended folded under the
   // shoulder with the elbow down and the hand up: the shoulder rested on it,
@@ -276,7 +276,9 @@ std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading
     if (!IsArm(limb)) continue;
     const std::array<float, 5> outToSide{170, 90, 0, 0, 0}, turnedThere{-55, 90, 0, 0, 0};
     const LimbMove out = RollLimb(r, limb, turn ? turnedThere : outToSide);
-    const bool needed = turn ? out.from.y > kArmOutAbduction && out.from.x > 0.0f : out.from.x > kOverheadArm;
+    const bool needed = raisedOnly ? !r.touching[i]
+                        : turn     ? out.from.y > kArmOutAbduction && out.from.x > 0.0f
+                                   : out.from.x > kOverheadArm;
     if (needed) move.limbs[i] = out, any = true;
   }
   if (!any) return std::nullopt;

@@ -486,6 +486,37 @@ TEST_CASE("phase 0: a face-down start with an arm overhead brings it out round t
   CHECK(result.stood);
 }
 
+TEST_CASE("phase 0: a hand the place left up comes out round the side before it is placed again") {
+  // Stress seed 74 (issue 8): face down with the left arm folded in front of
+  // the face, elbow on the ground and hand 19 cm up; placed again from there
+  // it stayed folded through every place, the push went ahead on one hand
+  // and the body fell. Now the raised arm comes out round the side first.
+  const rise::GeneratedClip result = GenerateTraced(
+      R"({"character":{"height_m":1.802,"mass_kg":104.618},"seed":74,"start":{"drop_height_m":0.522,"joints_deg":{"abdomen":[-17.31,-3.354,26.07],"chest":[6.972,-4.548,-6.014],"foot_l":[9.874,24.229],"foot_r":[-33.429,21.297],"forearm_l":[140.871],"forearm_r":[0.822],"hand_l":[41.004,16.831],"hand_r":[77.0,13.556],"head":[-35.826,-15.585,-5.744],"shin_l":[80.933],"shin_r":[30.406],"thigh_l":[84.132,27.539],"thigh_r":[15.272,44.941],"upper_arm_l":[77.622,1.715],"upper_arm_r":[-49.165,30.936]},"posture":"custom","root_euler_deg":[124.266,49.532,-42.82]},"style":{"look_around":0.943,"speed":2.43,"stance_width_m":0.459,"step_height_m":0.267,"sway":0.668,"tiredness":0.81},"terrain":{"friction":0.77,"slope_deg":0.544}})");
+  REQUIRE_FALSE(result.trace.empty());
+  int pushes = 0;
+  bool outAfterHandsDown = false;
+  std::string previous;
+  for (const rise::TraceSample& sample : result.trace) {
+    if (sample.move == "arm out" && previous == "hands down") {
+      outAfterHandsDown = true;
+      const bool leftUp = !sample.touching[0], rightUp = !sample.touching[1];
+      CHECK((leftUp || rightUp));
+    }
+    if (sample.move == "push" && previous != "push") {
+      ++pushes;
+      INFO("push at " << sample.time << " s");
+      CHECK(sample.touching[0]);
+      CHECK(sample.touching[1]);
+    }
+    previous = sample.move;
+  }
+  INFO(result.outcome);
+  CHECK(outAfterHandsDown);
+  CHECK(pushes >= 1);
+  CHECK(result.stood);
+}
+
 TEST_CASE("phase 1: a hand or foot comes down from above its spot, not while still travelling along the ground") {
   // Prone starts of the notes harness (heading k*37 deg, seed k+1) in which a
   // swing lagging its path touched down at 1.4-2.8 m/s and slid; a swing is now
