@@ -297,7 +297,7 @@ class RiseController {
   // is finished by putting the limb down there, not where it hangs.
   std::array<std::optional<glm::vec3>, kLimbCount> stepSpot_{};
   int putDowns_ = 0;  // put-downs in a row that left their limb in the air
-  int placeTries_ = 0;  // places of hands and feet since the last push
+  int placeTries_ = 0;  // places of hands and feet since the last push or fall
   float rollSign_ = 0.0f;                   // +1 rolling onto the left side, -1 onto the right; 0 before the roll
   RollStage rollStage_ = RollStage::kNone;  // the roll's last move
   int rollMoves_ = 0;                       // moves since this roll started

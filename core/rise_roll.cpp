@@ -77,7 +77,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   // Crouched on both feet with the CoM over them: Phase 2 directly.
   if (OnItsFeet(r)) return PlanRise(r);
   // From rest (the start, or after a fall) a roll starts afresh.
-  if (phase_ == RisePhase::kSettle) rollSign_ = 0.0f, rollStage_ = RollStage::kNone, rollMoves_ = 0;
+  if (phase_ == RisePhase::kSettle) rollSign_ = 0.0f, rollStage_ = RollStage::kNone, rollMoves_ = 0, placeTries_ = 0;
   const glm::vec3 face = chest * glm::vec3(0, 0, 1);
   // Face down already: Phase 0 goes straight to placing hands and feet, but
   // an arm lying overhead first comes out round the side as at a roll's end.
