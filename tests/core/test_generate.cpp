@@ -33,6 +33,23 @@ rise::GeneratedClip GenerateTraced(const char* text) {
   return rise::GenerateClip(spec.Value(), settings);
 }
 
+// Checks that every push of a traced clip starts with both hands on the
+// ground; returns how many pushes there were.
+int PushesOnBothHands(const rise::GeneratedClip& result) {
+  int pushes = 0;
+  std::string previous;
+  for (const rise::TraceSample& sample : result.trace) {
+    if (sample.move == "push" && previous != "push") {
+      ++pushes;
+      INFO("push at " << sample.time << " s");
+      CHECK(sample.touching[0]);
+      CHECK(sample.touching[1]);
+    }
+    previous = sample.move;
+  }
+  return pushes;
+}
+
 bool SameClip(const rise::Clip& a, const rise::Clip& b) {
   if (a.FrameCount() != b.FrameCount() || a.rotations.size() != b.rotations.size()) return false;
   if (std::memcmp(a.rootTranslation.data(), b.rootTranslation.data(), a.rootTranslation.size() * sizeof(glm::vec3))) {
@@ -467,19 +484,11 @@ TEST_CASE("phase 0: a face-down start with an arm overhead brings it out round t
   const rise::GeneratedClip result = GenerateTraced(
       R"({"character":{"height_m":1.536,"mass_kg":55.924},"seed":107,"start":{"drop_height_m":0.193,"joints_deg":{"abdomen":[42.333,-24.59,9.616],"chest":[-2.702,12.603,16.489],"foot_l":[-28.72,6.128],"foot_r":[10.296,-13.004],"forearm_l":[1.197],"forearm_r":[43.895],"hand_l":[36.129,6.953],"hand_r":[-48.626,-5.284],"head":[-42.725,-22.921,10.337],"shin_l":[31.55],"shin_r":[122.428],"thigh_l":[-13.884,29.559],"thigh_r":[103.0,-25.474],"upper_arm_l":[75.004,5.585],"upper_arm_r":[86.365,46.634]},"posture":"custom","root_euler_deg":[-158.61,172.344,160.586]},"style":{"look_around":0.693,"speed":2.211,"stance_width_m":0.43,"step_height_m":0.221,"sway":0.901,"tiredness":0.768},"terrain":{"friction":1.082,"slope_deg":4.175}})");
   REQUIRE_FALSE(result.trace.empty());
-  int pushes = 0;
   bool armOut = false;
-  std::string previous;
   for (const rise::TraceSample& sample : result.trace) {
     armOut = armOut || (sample.move == "arm out" && sample.phase == rise::RisePhase::kRoll);
-    if (sample.move == "push" && previous != "push") {
-      ++pushes;
-      INFO("push at " << sample.time << " s");
-      CHECK(sample.touching[0]);
-      CHECK(sample.touching[1]);
-    }
-    previous = sample.move;
   }
+  const int pushes = PushesOnBothHands(result);
   INFO(result.outcome);
   CHECK(armOut);
   CHECK(pushes >= 1);
@@ -494,7 +503,6 @@ TEST_CASE("phase 0: a hand the place left up comes out round the side before it 
   const rise::GeneratedClip result = GenerateTraced(
       R"({"character":{"height_m":1.802,"mass_kg":104.618},"seed":74,"start":{"drop_height_m":0.522,"joints_deg":{"abdomen":[-17.31,-3.354,26.07],"chest":[6.972,-4.548,-6.014],"foot_l":[9.874,24.229],"foot_r":[-33.429,21.297],"forearm_l":[140.871],"forearm_r":[0.822],"hand_l":[41.004,16.831],"hand_r":[77.0,13.556],"head":[-35.826,-15.585,-5.744],"shin_l":[80.933],"shin_r":[30.406],"thigh_l":[84.132,27.539],"thigh_r":[15.272,44.941],"upper_arm_l":[77.622,1.715],"upper_arm_r":[-49.165,30.936]},"posture":"custom","root_euler_deg":[124.266,49.532,-42.82]},"style":{"look_around":0.943,"speed":2.43,"stance_width_m":0.459,"step_height_m":0.267,"sway":0.668,"tiredness":0.81},"terrain":{"friction":0.77,"slope_deg":0.544}})");
   REQUIRE_FALSE(result.trace.empty());
-  int pushes = 0;
   bool outAfterHandsDown = false;
   std::string previous;
   for (const rise::TraceSample& sample : result.trace) {
@@ -503,14 +511,9 @@ TEST_CASE("phase 0: a hand the place left up comes out round the side before it 
       const bool leftUp = !sample.touching[0], rightUp = !sample.touching[1];
       CHECK((leftUp || rightUp));
     }
-    if (sample.move == "push" && previous != "push") {
-      ++pushes;
-      INFO("push at " << sample.time << " s");
-      CHECK(sample.touching[0]);
-      CHECK(sample.touching[1]);
-    }
     previous = sample.move;
   }
+  const int pushes = PushesOnBothHands(result);
   INFO(result.outcome);
   CHECK(outAfterHandsDown);
   CHECK(pushes >= 1);
