@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
     const rise::GeneratedClip& clip = run->clip;
     if (only >= 0 && std::getenv("TRACE")) {
       if (FILE* file = std::fopen(std::getenv("TRACE"), "w")) {
-        const std::string lines = rise::TraceToJsonLines(clip.trace);
+        const std::string lines = rise::TraceToJsonLines(clip.trace, clip.clip.skeleton);
         std::fwrite(lines.data(), 1, lines.size(), file);
         std::fclose(file);
       }

@@ -76,7 +76,7 @@ int Run(const GenerateArgs& args) {
   std::string error = WriteClipFiles(generated.clip, args.outputs, output);
   std::vector<std::string> written = ClipOutputFiles(args.outputs);
   if (error.empty() && !args.trace.empty()) {
-    error = WriteFileAtomically(args.trace, TraceToJsonLines(generated.trace));
+    error = WriteFileAtomically(args.trace, TraceToJsonLines(generated.trace, generated.clip.skeleton));
     written.push_back(args.trace);
   }
   if (error.empty() && !args.preview.empty()) {

@@ -145,10 +145,12 @@ GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& setting
       }
     }
     const physics::StepStatus status = world.Step();
+    if (settings.keepTrace) result.trace.back().jointTorques.assign(jointCount, 0.0f);
     for (int j = 1; j < jointCount; ++j) {
-      if (biped.JointOf(j).IsValid()) {
-        peakTorque[j] = std::max(peakTorque[j], static_cast<double>(glm::length(world.GetMotorTorque(biped.JointOf(j)))));
-      }
+      if (!biped.JointOf(j).IsValid()) continue;
+      const float torque = glm::length(world.GetMotorTorque(biped.JointOf(j)));
+      peakTorque[j] = std::max(peakTorque[j], static_cast<double>(torque));
+      if (settings.keepTrace) result.trace.back().jointTorques[j] = torque;
     }
     if (!status.Ok()) {
       result.health = {false, Describe(status, world.Time(), biped)};
@@ -192,7 +194,7 @@ GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& setting
   return result;
 }
 
-std::string TraceToJsonLines(const std::vector<TraceSample>& trace) {
+std::string TraceToJsonLines(const std::vector<TraceSample>& trace, const Skeleton& skeleton) {
   auto vec = [](const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); };
   std::string text;
   for (const TraceSample& sample : trace) {
@@ -201,7 +203,9 @@ std::string TraceToJsonLines(const std::vector<TraceSample>& trace) {
     line["phase"] = RisePhaseName(sample.phase);
     line["move"] = sample.move;
     line["com"] = vec(sample.com);
+    line["com_velocity"] = vec(sample.comVelocity);
     line["com_goal"] = vec(sample.comGoal);
+    line["pressure"] = vec(sample.pressure);
     line["heading"] = vec(sample.heading);
     line["tracking_error"] = sample.trackingError;
     line["feet_distance"] = sample.feetDistance;
@@ -215,8 +219,14 @@ std::string TraceToJsonLines(const std::vector<TraceSample>& trace) {
       limb["clearance"] = sample.clearance[i];
       limb["touching"] = sample.touching[i];
       limb["planted"] = sample.planted[i];
+      limb["load"] = sample.load[i];
       line[LimbName(static_cast<Limb>(i))] = limb;
     }
+    nlohmann::json torques = nlohmann::json::object();
+    for (size_t j = 1; j < sample.jointTorques.size(); ++j) {
+      if (skeleton.joints[j].hasBox) torques[skeleton.joints[j].name] = sample.jointTorques[j];
+    }
+    line["torques"] = torques;
     text += line.dump() + "\n";
   }
   return text;

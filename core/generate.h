@@ -44,6 +44,6 @@ struct GeneratedClip {
 GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& settings = {});
 
 // The debug trace as JSON lines (one object per control step).
-std::string TraceToJsonLines(const std::vector<TraceSample>& trace);
+std::string TraceToJsonLines(const std::vector<TraceSample>& trace, const Skeleton& skeleton);
 
 }  // namespace rise

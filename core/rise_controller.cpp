@@ -312,8 +312,9 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
   // The pose to track.
   out.local.assign(def_.skeleton.joints.size(), glm::quat(1, 0, 0, 0));
   out.gainScale.assign(def_.skeleton.joints.size(), 1.0f);
+  WeightShare shared;
   if (!hasMove_) {
-    FeedForward(reading, reading.com, out.feedForward);
+    shared = FeedForward(reading, reading.com, out.feedForward);
     // Settling: servos hold the joints where they are, softly.
     out.local = LocalRotations(def_.skeleton, reading.jointRotations);
     std::fill(out.gainScale.begin(), out.gainScale.end(), 0.3f);
@@ -325,7 +326,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     out.local = LocalRotations(def_.skeleton, pose.worldRotations);
     // The plan's CoM is only needed for the virtual force on hands and feet.
     const glm::vec3 comGoal = OnHandsAndFeet(phase_) ? PoseCom(GoalAt(move_, progress_, reading, false)) : reading.com;
-    FeedForward(reading, comGoal, out.feedForward);
+    shared = FeedForward(reading, comGoal, out.feedForward);
     for (int i = 0; i < 2; ++i) {
       if (planted_[i]) out.gainScale[rig_.end[i]] = kPlantedWristGain;
     }
@@ -340,6 +341,9 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
   trace_.phase = phase_;
   trace_.move = hasMove_ ? move_.name : "settle";
   trace_.com = reading.com;
+  trace_.comVelocity = reading.comVelocity;
+  trace_.pressure = shared.pressure;
+  trace_.load = shared.share;
   trace_.heading = heading_;
   trace_.touching = reading.touching;
   trace_.planted = planted_;

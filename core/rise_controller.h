@@ -59,7 +59,11 @@ struct TraceSample {
   RisePhase phase = RisePhase::kSettle;
   std::string move;
   glm::vec3 com{0.0f};
+  glm::vec3 comVelocity{0.0f};  // m/s
   glm::vec3 comGoal{0.0f};
+  // Where the feed-forward aims the body's weight, on the ground: in the rise
+  // and the stand the balance's centre of pressure, otherwise under the CoM.
+  glm::vec3 pressure{0.0f};
   glm::vec3 heading{0.0f, 0.0f, 1.0f};  // the way the plan faces the body, along the ground
   SupportPolygon support;
   float feetDistance = 0.0f;  // CoM ground projection to the feet's soles, m (negative inside)
@@ -68,7 +72,11 @@ struct TraceSample {
   std::array<float, kLimbCount> clearance{};           // lowest corner of the hand/foot box above the ground, m
   std::array<bool, kLimbCount> touching{};
   std::array<bool, kLimbCount> planted{};
+  std::array<float, kLimbCount> load{};  // share of the weight the feed-forward puts on each hand/foot
   float trackingError = 0.0f;
+  // Per skeleton joint: the magnitude of the motor torque over the step that
+  // follows this sample, N*m (0 for the root). Filled by GenerateClip.
+  std::vector<float> jointTorques;
 };
 
 class RiseController {
@@ -251,7 +259,12 @@ class RiseController {
   // shared among the planted supports so their centre of pressure is under
   // the CoM (on the feet alone, where it accelerates the CoM toward the
   // balance point). Internal torques only: nothing pushes the body from outside.
-  void FeedForward(const BodyReading& reading, const glm::vec3& comGoal, std::vector<glm::vec3>& out) const;
+  // Returns how it shared the weight, for the trace.
+  struct WeightShare {
+    glm::vec3 pressure{0.0f};
+    std::array<float, kLimbCount> share{};
+  };
+  WeightShare FeedForward(const BodyReading& reading, const glm::vec3& comGoal, std::vector<glm::vec3>& out) const;
   // Height of the lowest corner of a hand or foot above the ground, m.
   float Clearance(const BodyReading& reading, Limb limb) const;
   // Where a hand or foot touches the ground: the heel of a hand, the toe edge

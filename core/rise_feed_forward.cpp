@@ -23,12 +23,15 @@ constexpr float kMaxVirtualForce = 0.25f;
 
 }  // namespace
 
-void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal, std::vector<glm::vec3>& out) const {
+RiseController::WeightShare RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
+                                                        std::vector<glm::vec3>& out) const {
   const Skeleton& sk = def_.skeleton;
   out.assign(sk.joints.size(), glm::vec3(0.0f));
   // Only once the body is up on its hands and feet are the supports known;
   // lying, the trunk rests on the ground and needs no help.
-  if (phase_ == RisePhase::kSettle || phase_ == RisePhase::kRoll || phase_ == RisePhase::kPlace || !hasMove_) return;
+  WeightShare shared;
+  shared.pressure = Project(ground_, r.com);
+  if (phase_ == RisePhase::kSettle || phase_ == RisePhase::kRoll || phase_ == RisePhase::kPlace || !hasMove_) return shared;
 
   const glm::vec3 gravity(0.0f, -9.81f, 0.0f);
   // Phase 2 balances on the feet alone: the ground's push is aimed so the CoM
@@ -60,7 +63,7 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
     point[i] = SupportPoint(r, static_cast<Limb>(i), pressure);
     supports.push_back(i);
   }
-  if (supports.empty()) return;
+  if (supports.empty()) return shared;
   const glm::vec2 c = Ground(pressure);
   for (int pass = 0; pass < 3; ++pass) {
     // Solve A A^T y = b, w = A^T y with A = [1; x; z] over the supports.
@@ -85,7 +88,9 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
   }
   float total = 0.0f;
   for (int i : supports) total += share[i];
-  if (total <= 0.0f) return;
+  if (total <= 0.0f) return shared;
+  shared.pressure = Project(ground_, pressure);
+  for (int i : supports) shared.share[i] = share[i] / total;
   std::array<glm::vec3, kLimbCount> force{};
   // On hands and feet, a virtual force on the CoM (Coros et al. 2010) pulls it
   // toward the plan's CoM: a spring-damper shared among the supports like the
@@ -113,6 +118,7 @@ void RiseController::FeedForward(const BodyReading& r, const glm::vec3& comGoal,
     }
     out[j] = torque;
   }
+  return shared;
 }
 
 }  // namespace rise

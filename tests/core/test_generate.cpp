@@ -696,7 +696,7 @@ TEST_CASE("the trace has one sample per control step") {
   settings.keepTrace = true;
   const rise::GeneratedClip result = rise::GenerateClip(ProneSpec(1.0), settings);
   CHECK(result.trace.size() == 241u);  // steps 0..240 at 240 Hz
-  const std::string lines = rise::TraceToJsonLines(result.trace);
+  const std::string lines = rise::TraceToJsonLines(result.trace, result.clip.skeleton);
   CHECK(std::count(lines.begin(), lines.end(), '\n') == 241);
   // Each hand and foot: its measured wrist/ankle and how far its box is above
   // the ground. Lying prone at the start the feet rest on the ground.
@@ -710,5 +710,65 @@ TEST_CASE("the trace has one sample per control step") {
     CHECK(last[limb]["clearance"].get<float>() < at.y);
   }
   CHECK(std::fabs(result.trace.front().clearance[2]) < 0.01f);
+}
+
+TEST_CASE("the trace shows the CoM's velocity, where the weight is aimed, each support's load and the joint torques") {
+  // Up to the crawl: lying (no loads), the push on two hands, a foot step.
+  rise::GenerateSettings settings;
+  settings.keepTrace = true;
+  const rise::RiseSpec spec = ProneSpec(5.0);
+  const rise::GeneratedClip result = rise::GenerateClip(spec, settings);
+  const std::vector<rise::TraceSample>& trace = result.trace;
+  REQUIRE(trace.size() > 2u);
+  const rise::BipedDef def = rise::MakeBipedDef(spec.character);
+  const int joints = static_cast<int>(def.skeleton.joints.size());
+
+  // The velocity is the CoM's: the central difference of its positions
+  // (which a contact's jolt makes differ for a step).
+  float meanError = 0.0f;
+  for (size_t k = 1; k + 1 < trace.size(); ++k) {
+    const glm::vec3 difference =
+        (trace[k + 1].com - trace[k - 1].com) / static_cast<float>(trace[k + 1].time - trace[k - 1].time);
+    meanError += glm::length(difference - trace[k].comVelocity) / static_cast<float>(trace.size() - 2);
+  }
+  CHECK(meanError < 0.005f);
+
+  // The weight goes on planted hands and feet that touch, all of it.
+  int loaded = 0;
+  std::vector<float> peak(joints, 0.0f);
+  for (size_t k = 0; k < trace.size(); ++k) {
+    const rise::TraceSample& sample = trace[k];
+    float total = 0.0f;
+    for (int i = 0; i < rise::kLimbCount; ++i) {
+      CHECK(sample.load[i] >= 0.0f);
+      if (!sample.planted[i] || !sample.touching[i]) CHECK(sample.load[i] == 0.0f);
+      total += sample.load[i];
+    }
+    if (total > 0.0f) {
+      ++loaded;
+      CHECK(total == doctest::Approx(1.0f).epsilon(1e-4));
+    }
+    CHECK(std::fabs(sample.pressure.y) < 1e-4f);  // on the level ground
+    // The torques of the step after the sample (none after the last).
+    if (k + 1 == trace.size()) continue;
+    REQUIRE(static_cast<int>(sample.jointTorques.size()) == joints);
+    for (int j = 0; j < joints; ++j) peak[j] = std::max(peak[j], sample.jointTorques[j]);
+  }
+  CHECK(loaded > 240);
+  CHECK(peak[0] == 0.0f);
+  // Their maxima are the clip's peak torques.
+  for (const auto& [joint, torque] : result.clip.metadata.peakTorques) {
+    INFO(joint);
+    CHECK(torque > 0.0);
+    CHECK(peak[def.Find(joint)] == torque);
+  }
+
+  const std::string lines = rise::TraceToJsonLines(trace, result.clip.skeleton);
+  const nlohmann::json first = nlohmann::json::parse(lines.substr(0, lines.find('\n')));
+  CHECK(first["com_velocity"].size() == 3u);
+  CHECK(first["pressure"].size() == 3u);
+  CHECK(first["hand_l"]["load"].get<float>() == 0.0f);
+  CHECK(first["torques"].size() == 15u);
+  CHECK(first["torques"]["shin_l"].get<float>() == doctest::Approx(trace.front().jointTorques[def.Find("shin_l")]));
 }
 }
