@@ -75,7 +75,8 @@ struct TraceSample {
   std::array<float, kLimbCount> load{};  // share of the weight the feed-forward puts on each hand/foot
   float trackingError = 0.0f;
   // Per skeleton joint: the magnitude of the motor torque over the step that
-  // follows this sample, N*m (0 for the root). Filled by GenerateClip.
+  // follows this sample, N*m (0 where no motor: the root and the end joints).
+  // Filled by GenerateClip.
   std::vector<float> jointTorques;
 };
 

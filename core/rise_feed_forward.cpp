@@ -102,7 +102,7 @@ RiseController::WeightShare RiseController::FeedForward(const BodyReading& r, co
     const float limit = kMaxVirtualForce * totalMass_ * 9.81f;
     if (glm::length(virtualForce) > limit) virtualForce *= limit / glm::length(virtualForce);
   }
-  for (int i : supports) force[i] = (virtualForce - gravity * totalMass_) * (share[i] / total);
+  for (int i : supports) force[i] = (virtualForce - gravity * totalMass_) * shared.share[i];
 
   for (int j = 1; j < sk.JointCount(); ++j) {
     if (!sk.joints[j].hasBox) continue;
