@@ -15,13 +15,15 @@
 // and the two physical bounds:
 //   - no body (box centre) moves faster than kMaxBodySpeed between two steps;
 //   - no box vertex goes deeper than kMaxPenetration below the ground (the slope plane).
-// Standing is reported (stand rate, seeds that did not stand, outcomes histogram), not asserted.
+// Standing is reported (stand rate, seeds that did not stand, outcomes histogram, and the phases the
+// tries before the stand ended in: a fall, or a roll or crawl that could not go on), not asserted.
 //
 //   stress_runner [--count N] [--first-seed S] [--jobs J] [--max-duration SECONDS (default: left out)] [--seeds a,b,c]
 //                 [--bounds assert|report] [--runs FILE]
 // Exit 0 when every run is healthy, 1 when any run is not (listed with its seed and input); the
 // two physical bounds (body speed, box depth) count too unless `--bounds report`. 2 for bad
-// arguments. --runs writes one JSON line per run (seed, stood, outcome, input) for analysis.
+// arguments. --runs writes one JSON line per run (seed, stood, outcome, the phases its tries ended
+// in, input) for analysis.
 // Runs are a pure function of their seed, so a failing seed reproduces with
 // `--seeds <seed>`.
 #include <algorithm>
@@ -71,6 +73,10 @@ struct RunResult {
   double timeToStand = -1.0;
   double simulated = 0.0;
   std::string outcome;
+  // The phase of every try that ended before the stand (a fall, or a roll or crawl that could not
+  // go on), in order: each sent the plan back to settle. The last phase alone hides a rise that
+  // fell and left too little time for the next try to get past the crawl.
+  std::vector<std::string> retriedFrom;
   std::vector<std::string> violations;  // broken health (tier 3) or result rules; empty when healthy
   std::vector<std::string> overBounds;  // physical bounds broken (body speed, box depth)
   double maxBodySpeed = 0.0;
@@ -157,6 +163,10 @@ RunResult Run(uint64_t seed, double maxDuration) {
   run.timeToStand = generated.timeToStand;
   run.simulated = generated.simulatedSeconds;
   run.outcome = generated.outcome;
+  const std::vector<rise::PhaseSpan>& phases = generated.clip.metadata.phases;
+  for (size_t k = 1; k < phases.size(); ++k) {
+    if (phases[k].name == "settle" && phases[k - 1].name != "settle") run.retriedFrom.push_back(phases[k - 1].name);
+  }
   if (!generated.health.ok) run.violations.push_back("unhealthy simulation: " + generated.health.message);
 
   const std::vector<std::vector<glm::vec3>> positions = rise::JointPositionSequence(generated.clip);
@@ -296,11 +306,14 @@ int main(int argc, char** argv) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::map<std::string, std::vector<uint64_t>> kinds;
+  std::map<std::string, std::pair<int, int>> retries;  // phase -> (tries ended there, runs whose first did)
   int stood = 0, violations = 0;
   std::vector<uint64_t> overBounds;
   double slowest = 0.0, fastestSpeed = 0.0, deepest = 0.0;
   for (const RunResult& run : results) {
     kinds[OutcomeKind(run)].push_back(run.seed);
+    for (const std::string& phase : run.retriedFrom) ++retries[phase].first;
+    if (!run.retriedFrom.empty()) ++retries[run.retriedFrom.front()].second;
     stood += run.stood ? 1 : 0;
     violations += run.violations.empty() ? 0 : 1;
     if (!run.overBounds.empty()) overBounds.push_back(run.seed);
@@ -312,7 +325,7 @@ int main(int argc, char** argv) {
     std::ofstream runs(options.runsFile);
     for (const RunResult& run : results) {
       runs << nlohmann::json{{"seed", run.seed}, {"stood", run.stood}, {"time_to_stand", run.timeToStand},
-                             {"outcome", run.outcome}, {"input", nlohmann::json::parse(run.input)}}.dump()
+                             {"outcome", run.outcome}, {"retried_from", run.retriedFrom}, {"input", nlohmann::json::parse(run.input)}}.dump()
            << '\n';
     }
   }
@@ -326,6 +339,10 @@ int main(int argc, char** argv) {
     std::printf("  %5zu  %s; seeds", list.size(), kind.c_str());
     for (size_t i = 0; i < list.size() && i < 12; ++i) std::printf(" %llu", static_cast<unsigned long long>(list[i]));
     std::printf(list.size() > 12 ? " ...\n" : "\n");
+  }
+  std::printf("tries that ended before the stand (a fall, or a roll or crawl that could not go on), by phase:\n");
+  for (const auto& [phase, count] : retries) {
+    std::printf("  %5d  in %s (the first of %d runs)\n", count.first, phase.c_str(), count.second);
   }
   std::printf("health: %d run(s) unhealthy or without a clear result\n", violations);
   std::printf(
