@@ -56,6 +56,15 @@ constexpr int kMaxRollMoves = 13;
 // Places of the hands and feet before the push goes ahead with a hand still up.
 constexpr int kMaxPlaceTries = 3;
 
+// A rising body whose chest is folded further than this from upright...
+constexpr float kFoldedChest = glm::radians(70.0f);
+// ... with its CoM this far past the soles is off its feet.
+constexpr float kOffFeet = 0.05f;  // m
+
+// A rise tipping forward off its feet puts its hands down (PlanCatch) at most
+// this many times a try before the tip counts as a fall.
+constexpr int kMaxCatches = 2;
+
 }  // namespace
 
 const char* RisePhaseName(RisePhase phase) {
@@ -171,10 +180,30 @@ bool RiseController::Fallen(const BodyReading& r) const {
   }
   if (phase_ != RisePhase::kRise && phase_ != RisePhase::kStand) return false;
   if (pelvisHeight < 0.25f * standPelvisHeight_) return true;
+  return FoldedOffFeet(r);
+}
+
+bool RiseController::FoldedOffFeet(const BodyReading& r) const {
   // A chest folded over the knees is how a rise from a squat starts (and what
   // OnItsFeet accepts): down only with the CoM off the feet as well.
   const glm::vec3 up = r.jointRotations[rig_.chest] * kUp;
-  return glm::dot(up, kUp) < std::cos(glm::radians(70.0f)) && comToFeet() > 0.05f;
+  return glm::dot(up, kUp) < std::cos(kFoldedChest) && FeetRegion(r).SignedDistance(Ground(r.com)) > kOffFeet;
+}
+
+bool RiseController::TippingForward(const BodyReading& r) const {
+  return Height(ground_, r.jointPositions[rig_.pelvis]) >= 0.25f * standPelvisHeight_ && FoldedOffFeet(r) &&
+         glm::dot(r.comVelocity, heading_) > 0.0f;
+}
+
+void RiseController::StartOver() {
+  // Down again: wait for rest and start over, kMaxRetries times.
+  givingUp_ = retries_ == kMaxRetries;
+  retries_ = std::min(retries_ + 1, kMaxRetries);
+  hasMove_ = false;
+  phase_ = RisePhase::kSettle;
+  restSince_ = -1.0;
+  standTime_ = -1.0;
+  catches_ = 0;
 }
 
 void RiseController::PlanNext(const BodyReading& reading) {
@@ -182,6 +211,13 @@ void RiseController::PlanNext(const BodyReading& reading) {
     case RisePhase::kSettle:
     case RisePhase::kRoll: StartMove(PlanRoll(reading)); break;
     case RisePhase::kPlace: {
+      // Caught on both hands: up onto hands and feet again, and the crawl
+      // finishes from there; a catch that missed is a fall.
+      if (move_.name == "catch") {
+        if (reading.touching[0] && reading.touching[1]) StartMove(PlanPush(reading));
+        else StartOver();
+        break;
+      }
       if (move_.name == "place") {
         StartMove(PlanHandsDown(reading));
         break;
@@ -234,14 +270,11 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     } else if (rested || OnItsFeet(reading)) {
       PlanNext(reading);
     }
+  } else if (phase_ == RisePhase::kRise && catches_ < kMaxCatches && TippingForward(reading)) {
+    ++catches_;
+    StartMove(PlanCatch(reading));
   } else if (Fallen(reading)) {
-    // Down again: wait for rest and start over, kMaxRetries times.
-    givingUp_ = retries_ == kMaxRetries;
-    retries_ = std::min(retries_ + 1, kMaxRetries);
-    hasMove_ = false;
-    phase_ = RisePhase::kSettle;
-    restSince_ = -1.0;
-    standTime_ = -1.0;
+    StartOver();
   } else if (hasMove_) {
     // Quasi-static pace: progress slows while the pelvis lags its goal.
     // The lag behind the goal last handed to the servos, one step old: the

@@ -16,7 +16,8 @@
 // Phases (names as written into the clip's metadata):
 //   settle  wait until the fallen body is at rest
 //   roll    Phase 0: roll onto the front (from the back, a side or any pose)
-//   place   Phase 0: hands beside the chest, toes tucked under
+//   place   Phase 0: hands beside the chest, toes tucked under (and a rise
+//           tipping forward off its toes catches itself on its hands here)
 //   push    Phase 0: push up onto hands and feet
 //   crawl   Phase 1: shift the CoM toward the feet; move the free hand beside
 //           the CoM; swap the support hand; repeat until the CoM is over the feet
@@ -158,6 +159,8 @@ class RiseController {
   std::optional<Move> PlanArmOut(const BodyReading& reading, RollStage stage, bool raisedOnly = false) const;
   Move PlanPlace(const BodyReading& reading);
   Move PlanHandsDown(const BodyReading& reading) const;  // the hands left hovering by the place come straight down
+  // A rise tipping forward off its feet: the hands come straight down to catch it.
+  Move PlanCatch(const BodyReading& reading) const;
   Move PlanPush(const BodyReading& reading);
   // The end of the crawl: heels down, then the CoM back over the flat soles.
   Move FinishCrawl(const BodyReading& reading);
@@ -251,6 +254,12 @@ class RiseController {
   // starting at fraction delay of the move.
   LimbMove ArmToSide(const BodyReading& reading, Limb hand, float delay) const;
   void StartMove(Move move);
+  // The chest folded over and the CoM off the feet past their toes.
+  bool FoldedOffFeet(const BodyReading& reading) const;
+  // In the rise: folded off the feet and still going forward, on its feet (not yet down).
+  bool TippingForward(const BodyReading& reading) const;
+  // A fall: back to settle, to wait for rest and try again.
+  void StartOver();
   bool Fallen(const BodyReading& reading) const;
   // Crouched or standing on both feet with the CoM over them (sets the heading).
   bool OnItsFeet(const BodyReading& reading);
@@ -311,6 +320,7 @@ class RiseController {
   // is finished by putting the limb down there, not where it hangs.
   std::array<std::optional<glm::vec3>, kLimbCount> stepSpot_{};
   int putDowns_ = 0;  // put-downs in a row that left their limb in the air
+  int catches_ = 0;  // rises tipping forward caught on the hands this try
   int placeTries_ = 0;  // places of hands and feet since the last push or fall
   float rollSign_ = 0.0f;                   // +1 rolling onto the left side, -1 onto the right; 0 before the roll
   RollStage rollStage_ = RollStage::kNone;  // the roll's last move

@@ -475,6 +475,29 @@ TEST_CASE("phase 1: a hand or foot its hip or shoulder cannot put down ends the 
   CHECK(longest < 6.0);
 }
 
+TEST_CASE("phase 2: a rise that tips forward off its toes is caught on the hands and goes on from all fours") {
+  // Stress seed 80 (issue 8): a short, heavy, tired body rose from a squat
+  // with its CoM at its toes, tipped forward and was counted as fallen while
+  // its hands came down; the settle began a new rise at once, the CoM rocking
+  // back at 0.3 m/s, and that one fell backward. Now the hands catch the tip
+  // (both down before the push that follows) and the same try stands.
+  const rise::GeneratedClip result = GenerateTraced(
+      R"({"character":{"height_m":1.495,"mass_kg":101.82},"seed":80,"start":{"drop_height_m":0.533,"joints_deg":{"abdomen":[-7.667,3.202,3.78],"chest":[28.219,-9.258,34.942],"foot_l":[-37.928,11.793],"foot_r":[19.25,32.731],"forearm_l":[22.053],"forearm_r":[41.505],"hand_l":[-36.918,-30.983],"hand_r":[-6.54,17.552],"head":[-17.828,-27.664,-59.908],"shin_l":[36.572],"shin_r":[20.554],"thigh_l":[62.467,-23.314],"thigh_r":[-7.452,29.078],"upper_arm_l":[39.434,88.735],"upper_arm_r":[59.462,22.286]},"posture":"custom","root_euler_deg":[62.48,-87.35,171.525]},"style":{"look_around":0.456,"speed":2.931,"stance_width_m":0.183,"step_height_m":0.291,"sway":0.403,"tiredness":0.678},"terrain":{"friction":0.726,"slope_deg":1.137}})");
+  REQUIRE_FALSE(result.trace.empty());
+  int catches = 0;
+  std::string previous;
+  for (const rise::TraceSample& sample : result.trace) {
+    if (sample.move == "catch" && previous == "rise") ++catches;
+    previous = sample.move;
+  }
+  const int pushes = PushesOnBothHands(result);
+  INFO(result.outcome);
+  CHECK(catches >= 1);
+  CHECK(pushes >= 2);
+  CHECK(result.retries == 0);
+  CHECK(result.stood);
+}
+
 TEST_CASE("phase 0: a face-down start with an arm overhead brings it out round the side before the hands are placed") {
   // Stress seed 107 (issue 8): lying face down with the right arm overhead,
   // the place swung that hand toward its spot under the shoulder, the bent
