@@ -56,13 +56,13 @@ constexpr int kMaxRollMoves = 13;
 // Places of the hands and feet before the push goes ahead with a hand still up.
 constexpr int kMaxPlaceTries = 3;
 
-// A rising body whose chest is folded further than this from upright...
-constexpr float kFoldedChest = glm::radians(70.0f);
-// ... with its CoM this far past the soles is off its feet.
-constexpr float kOffFeet = 0.05f;  // m
+// A rising or standing body whose pelvis is lower than this, of its standing
+// height, is down.
+constexpr float kDownPelvis = 0.25f;
 
-// A rise tipping forward off its feet puts its hands down (PlanCatch) at most
-// this many times a try before the tip counts as a fall.
+// A rise that falls forward off its feet with the pelvis still up puts its
+// hands down (PlanCatch) at most this many times a try before the tip counts
+// as a fall.
 constexpr int kMaxCatches = 2;
 
 }  // namespace
@@ -179,20 +179,11 @@ bool RiseController::Fallen(const BodyReading& r) const {
     return !(r.touching[2] && r.touching[3] && comToFeet() < 0.0f);
   }
   if (phase_ != RisePhase::kRise && phase_ != RisePhase::kStand) return false;
-  if (pelvisHeight < 0.25f * standPelvisHeight_) return true;
-  return FoldedOffFeet(r);
-}
-
-bool RiseController::FoldedOffFeet(const BodyReading& r) const {
+  if (pelvisHeight < kDownPelvis * standPelvisHeight_) return true;
   // A chest folded over the knees is how a rise from a squat starts (and what
   // OnItsFeet accepts): down only with the CoM off the feet as well.
   const glm::vec3 up = r.jointRotations[rig_.chest] * kUp;
-  return glm::dot(up, kUp) < std::cos(kFoldedChest) && FeetRegion(r).SignedDistance(Ground(r.com)) > kOffFeet;
-}
-
-bool RiseController::TippingForward(const BodyReading& r) const {
-  return Height(ground_, r.jointPositions[rig_.pelvis]) >= 0.25f * standPelvisHeight_ && FoldedOffFeet(r) &&
-         glm::dot(r.comVelocity, heading_) > 0.0f;
+  return glm::dot(up, kUp) < std::cos(glm::radians(70.0f)) && comToFeet() > 0.05f;
 }
 
 void RiseController::StartOver() {
@@ -270,11 +261,18 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     } else if (rested || OnItsFeet(reading)) {
       PlanNext(reading);
     }
-  } else if (phase_ == RisePhase::kRise && catches_ < kMaxCatches && TippingForward(reading)) {
-    ++catches_;
-    StartMove(PlanCatch(reading));
   } else if (Fallen(reading)) {
-    StartOver();
+    // In the rise with the pelvis up, the fall is the folded body going off
+    // its toes: while it still goes forward, the hands can catch it.
+    const bool tipping = phase_ == RisePhase::kRise && catches_ < kMaxCatches &&
+                         Height(ground_, reading.jointPositions[rig_.pelvis]) >= kDownPelvis * standPelvisHeight_ &&
+                         glm::dot(reading.comVelocity, heading_) > 0.0f;
+    if (tipping) {
+      ++catches_;
+      StartMove(PlanCatch(reading));
+    } else {
+      StartOver();
+    }
   } else if (hasMove_) {
     // Quasi-static pace: progress slows while the pelvis lags its goal.
     // The lag behind the goal last handed to the servos, one step old: the

@@ -254,10 +254,6 @@ class RiseController {
   // starting at fraction delay of the move.
   LimbMove ArmToSide(const BodyReading& reading, Limb hand, float delay) const;
   void StartMove(Move move);
-  // The chest folded over and the CoM off the feet past their toes.
-  bool FoldedOffFeet(const BodyReading& reading) const;
-  // In the rise: folded off the feet and still going forward, on its feet (not yet down).
-  bool TippingForward(const BodyReading& reading) const;
   // A fall: back to settle, to wait for rest and try again.
   void StartOver();
   bool Fallen(const BodyReading& reading) const;
