@@ -24,6 +24,16 @@ constexpr float kSupportArmReach = 1.0f;  // shoulder-to-wrist, of the arm's rea
 // capture point's offset from the feet centre.
 constexpr float kCaptureGain = 1.0f;
 
+// Nearly upright (pelvis above kSoftKneesFrom of its standing height), the legs
+// are straight: a pelvis slid over the ground at its planned height puts the
+// feet out of reach, the slide halved itself to a few millimetres, and the
+// ankle strategy had no say. A balance at 2-3 mm of a 10 cm CoM error let the
+// CoM creep off staggered feet at 3-5 cm/s until the body fell (stress seed
+// 21: falls from the stand in seeds 1-600, 26). The slide bends the knees
+// instead: the pelvis drops by what the slide takes (d^2 / 2 L) and kSoftKnees.
+constexpr float kSoftKnees = 0.02f;     // m
+constexpr float kSoftKneesFrom = 0.9f;  // of the standing pelvis height
+
 // PlanTrunk's priorities, as weights of its least-squares residuals (per m, rad).
 constexpr float kReachWeight = 30.0f;
 constexpr float kStraightArmWeight = 3.0f;
@@ -398,7 +408,8 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
     // inverted pendulum) so a body drifting forward is leaned back before its
     // CoM leaves the feet, plus the integral correction for the servos' sag.
     // The correction is bounded by what the feet can hold, the slide by what
-    // the ankles allow with the feet flat where they are. (Horizontal: balance
+    // the ankles allow with the feet flat where they are (upright, with the
+    // knees bent as far as the slide needs: kSoftKnees). (Horizontal: balance
     // is along gravity, on a slope too; see PlanTrunk.)
     const glm::vec3 target = BalancePoint(reading);
     glm::vec3 capture = CapturePoint(reading) - target;
@@ -416,8 +427,12 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
       error.y = 0.0f;
       slide += error;
       if (glm::length(slide) > kMaxBalanceSlide) slide *= kMaxBalanceSlide / glm::length(slide);
+      const bool upright = Height(ground_, nominal) > kSoftKneesFrom * standPelvisHeight_;
       for (int halving = 0; halving < 5; ++halving, slide *= 0.5f) {
         goal.pelvisPosition = nominal + slide;
+        if (FeetFlat(goal)) break;
+        if (!upright) continue;
+        goal.pelvisPosition -= kUp * (glm::dot(slide, slide) / (2.0f * legReach_) + kSoftKnees);
         if (FeetFlat(goal)) break;
       }
       for (int i = 0; i < kLimbCount; ++i) {

@@ -498,6 +498,28 @@ TEST_CASE("phase 2: a rise that tips forward off its toes is caught on the hands
   CHECK(result.stood);
 }
 
+TEST_CASE("phase 2: upright on staggered feet, the balance bends the knees to slide the pelvis and keeps the CoM over the feet") {
+  // Stress seed 21 (issue 8): a heavy body stood up with its feet 24 cm apart
+  // along a diagonal. Upright, the legs were straight, so the balance's pelvis
+  // slide put the feet out of reach and shrank to 2-3 mm; the CoM crept off
+  // the feet at 3-5 cm/s and the body fell from the stand at 26.7 s. With the
+  // knees giving as the slide needs, the stand holds with the CoM inside.
+  const rise::GeneratedClip result = GenerateTraced(
+      R"({"character":{"height_m":1.6,"mass_kg":95.665},"seed":21,"start":{"drop_height_m":0.635,"joints_deg":{"abdomen":[5.519,-3.692,1.921],"chest":[7.565,-18.217,3.117],"foot_l":[14.791,23.569],"foot_r":[-13.625,8.477],"forearm_l":[113.579],"forearm_r":[42.475],"hand_l":[-24.562,-2.994],"hand_r":[-49.858,-16.865],"head":[58.214,3.552,28.358],"shin_l":[6.282],"shin_r":[102.543],"thigh_l":[-10.501,-22.744],"thigh_r":[94.237,-29.532],"upper_arm_l":[139.745,-9.73],"upper_arm_r":[145.819,72.168]},"posture":"custom","root_euler_deg":[111.45,-171.185,173.686]},"style":{"look_around":0.415,"speed":2.976,"stance_width_m":0.491,"step_height_m":0.201,"sway":0.459,"tiredness":0.134},"terrain":{"friction":0.304,"slope_deg":3.225}})");
+  INFO(result.outcome);
+  CHECK(result.stood);
+  CHECK(result.retries == 0);
+  float worst = -1.0f;  // the CoM's ground projection to the feet's soles, m (negative inside)
+  int standing = 0;
+  for (const rise::TraceSample& sample : result.trace) {
+    if (sample.phase != rise::RisePhase::kStand) continue;
+    worst = std::max(worst, sample.feetDistance);
+    ++standing;
+  }
+  CHECK(standing > 240);
+  CHECK(worst < -0.02f);
+}
+
 TEST_CASE("phase 0: a face-down start with an arm overhead brings it out round the side before the hands are placed") {
   // Stress seed 107 (issue 8): lying face down with the right arm overhead,
   // the place swung that hand toward its spot under the shoulder, the bent
