@@ -24,13 +24,14 @@ constexpr float kSupportArmReach = 1.0f;  // shoulder-to-wrist, of the arm's rea
 // capture point's offset from the feet centre.
 constexpr float kCaptureGain = 1.0f;
 
-// Nearly upright (pelvis above kSoftKneesFrom of its standing height), the legs
-// are straight: a pelvis slid over the ground at its planned height puts the
-// feet out of reach, the slide halved itself to a few millimetres, and the
-// ankle strategy had no say. A balance at 2-3 mm of a 10 cm CoM error let the
-// CoM creep off staggered feet at 3-5 cm/s until the body fell (stress seed
-// 21: falls from the stand in seeds 1-600, 26). The slide bends the knees
-// instead: the pelvis drops by what the slide takes (d^2 / 2 L) and kSoftKnees.
+// Phase 2's pelvis slide, nearly upright (pelvis above kSoftKneesFrom of its
+// standing height), drops the pelvis by what the slide takes (d^2 / 2 L) and
+// kSoftKnees: with the legs straight, a slide at the planned height puts the
+// feet out of reach, so it was halved to 2-3 mm against a 10 cm CoM error and
+// the CoM crept off staggered feet at 3-5 cm/s until the body fell (stress
+// seed 21; 26 tries fell from the stand in seeds 1-600, now 5). Lower in the
+// rise the drop deepened squats the ankles could not hold (7 tired prone
+// starts fell).
 constexpr float kSoftKnees = 0.02f;     // m
 constexpr float kSoftKneesFrom = 0.9f;  // of the standing pelvis height
 
@@ -421,13 +422,13 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
     const glm::vec3 centre = target + correction;
     Lean(move, s, balanceLean_, goal);
     const glm::vec3 nominal = goal.pelvisPosition;
+    const bool upright = Height(ground_, nominal) > kSoftKneesFrom * standPelvisHeight_;
     glm::vec3 slide(0.0f);
     for (int iteration = 0; iteration < 3; ++iteration) {
       glm::vec3 error = centre - PoseCom(goal);
       error.y = 0.0f;
       slide += error;
       if (glm::length(slide) > kMaxBalanceSlide) slide *= kMaxBalanceSlide / glm::length(slide);
-      const bool upright = Height(ground_, nominal) > kSoftKneesFrom * standPelvisHeight_;
       for (int halving = 0; halving < 5; ++halving, slide *= 0.5f) {
         goal.pelvisPosition = nominal + slide;
         if (FeetFlat(goal)) break;
