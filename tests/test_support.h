@@ -40,6 +40,9 @@ inline float AngleBetween(const glm::quat& a, const glm::quat& b) {
   return 2.0f * std::acos(d > 1.0f ? 1.0f : d);
 }
 
+// The bundled input files, samples/<name>.json (library.json, a batch manifest, aside).
+inline constexpr const char* kSampleInputs[] = {"supine", "prone", "side", "custom", "tall", "slope", "push", "reference"};
+
 }  // namespace rise::test
 
 #define CHECK_VEC3_NEAR(a, b, tol)                                                  \

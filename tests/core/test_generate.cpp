@@ -609,7 +609,7 @@ TEST_CASE("phases 0 to 2: no hand or foot slides along the ground on the way up"
 TEST_CASE("every bundled sample starts lying, as the clip's first frame is measured") {
   // A sample dropped from too high starts in the air with its head over the
   // 40 % bar (custom.json from 0.3 m: 60 %), a clip that fails "starts lying".
-  for (const char* name : {"supine", "prone", "side", "custom", "tall", "slope", "push", "reference"}) {
+  for (const char* name : rise::test::kSampleInputs) {
     INFO(name);
     const auto spec = rise::LoadRiseSpec(std::string(RISE_SOURCE_DIR) + "/samples/" + name + ".json");
     REQUIRE(spec.IsOk());

@@ -267,7 +267,7 @@ TEST_SUITE("input_json") {
   }
 
   TEST_CASE("every sample loads, and reference.json holds exactly the defaults") {
-    for (const char* name : {"supine", "prone", "side", "custom", "tall", "slope", "push", "reference"}) {
+    for (const char* name : rise::test::kSampleInputs) {
       const std::string path = std::string(RISE_SOURCE_DIR) + "/samples/" + name + ".json";
       const rise::Result<rise::RiseSpec> result = rise::LoadRiseSpec(path);
       INFO(path);
