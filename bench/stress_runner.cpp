@@ -15,15 +15,16 @@
 // and the two physical bounds:
 //   - no body (box centre) moves faster than kMaxBodySpeed between two steps;
 //   - no box vertex goes deeper than kMaxPenetration below the ground (the slope plane).
-// Standing is reported (stand rate, seeds that did not stand, outcomes histogram, and the phases the
-// tries before the stand ended in: a fall, or a roll or crawl that could not go on), not asserted.
+// Standing is reported (stand rate, seeds that did not stand, outcomes histogram, the phases the
+// tries before the stand ended in: a fall, or a roll or crawl that could not go on, and the mean
+// time per phase of the runs that stood and of those that did not), not asserted.
 //
 //   stress_runner [--count N] [--first-seed S] [--jobs J] [--max-duration SECONDS (default: left out)] [--seeds a,b,c]
 //                 [--bounds assert|report] [--runs FILE]
 // Exit 0 when every run is healthy, 1 when any run is not (listed with its seed and input); the
 // two physical bounds (body speed, box depth) count too unless `--bounds report`. 2 for bad
 // arguments. --runs writes one JSON line per run (seed, stood, outcome, the phases its tries ended
-// in, input) for analysis.
+// in, seconds per phase, input) for analysis.
 // Runs are a pure function of their seed, so a failing seed reproduces with
 // `--seeds <seed>`.
 #include <algorithm>
@@ -77,6 +78,9 @@ struct RunResult {
   // go on), in order: each sent the plan back to settle. The last phase alone hides a rise that
   // fell and left too little time for the next try to get past the crawl.
   std::vector<std::string> retriedFrom;
+  // Seconds spent in each phase, all tries together, in the order the run first entered them:
+  // where a run that did not stand spent its time.
+  std::vector<std::pair<std::string, double>> phaseSeconds;
   std::vector<std::string> violations;  // broken health (tier 3) or result rules; empty when healthy
   std::vector<std::string> overBounds;  // physical bounds broken (body speed, box depth)
   double maxBodySpeed = 0.0;
@@ -167,6 +171,12 @@ RunResult Run(uint64_t seed, double maxDuration) {
   for (size_t k = 1; k < phases.size(); ++k) {
     if (phases[k].name == "settle" && phases[k - 1].name != "settle") run.retriedFrom.push_back(phases[k - 1].name);
   }
+  for (const rise::PhaseSpan& span : phases) {
+    auto entry = std::find_if(run.phaseSeconds.begin(), run.phaseSeconds.end(),
+                              [&](const auto& phase) { return phase.first == span.name; });
+    if (entry == run.phaseSeconds.end()) entry = run.phaseSeconds.insert(entry, {span.name, 0.0});
+    entry->second += span.end - span.start;
+  }
   if (!generated.health.ok) run.violations.push_back("unhealthy simulation: " + generated.health.message);
 
   const std::vector<std::vector<glm::vec3>> positions = rise::JointPositionSequence(generated.clip);
@@ -220,6 +230,12 @@ RunResult Run(uint64_t seed, double maxDuration) {
   }
   run.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
+}
+
+nlohmann::json PhaseSecondsJson(const RunResult& run) {
+  nlohmann::json seconds = nlohmann::json::object();
+  for (const auto& [phase, total] : run.phaseSeconds) seconds[phase] = Round3(total);
+  return seconds;
 }
 
 // The outcome with its numbers left out, so like outcomes count together.
@@ -307,12 +323,18 @@ int main(int argc, char** argv) {
 
   std::map<std::string, std::vector<uint64_t>> kinds;
   std::map<std::string, std::pair<int, int>> retries;  // phase -> (tries ended there, runs whose first did)
+  std::vector<std::string> phaseOrder;                  // phase names as the runs first meet them
+  std::map<std::string, std::pair<double, double>> phaseSeconds;  // phase -> (stood, did not stand) total s
   int stood = 0, violations = 0;
   std::vector<uint64_t> overBounds;
   double slowest = 0.0, fastestSpeed = 0.0, deepest = 0.0;
   for (const RunResult& run : results) {
     kinds[OutcomeKind(run)].push_back(run.seed);
     for (const std::string& phase : run.retriedFrom) ++retries[phase].first;
+    for (const auto& [phase, seconds] : run.phaseSeconds) {
+      if (std::find(phaseOrder.begin(), phaseOrder.end(), phase) == phaseOrder.end()) phaseOrder.push_back(phase);
+      (run.stood ? phaseSeconds[phase].first : phaseSeconds[phase].second) += seconds;
+    }
     if (!run.retriedFrom.empty()) ++retries[run.retriedFrom.front()].second;
     stood += run.stood ? 1 : 0;
     violations += run.violations.empty() ? 0 : 1;
@@ -325,7 +347,7 @@ int main(int argc, char** argv) {
     std::ofstream runs(options.runsFile);
     for (const RunResult& run : results) {
       runs << nlohmann::json{{"seed", run.seed}, {"stood", run.stood}, {"time_to_stand", run.timeToStand},
-                             {"outcome", run.outcome}, {"retried_from", run.retriedFrom}, {"input", nlohmann::json::parse(run.input)}}.dump()
+                             {"outcome", run.outcome}, {"retried_from", run.retriedFrom}, {"phase_seconds", PhaseSecondsJson(run)}, {"input", nlohmann::json::parse(run.input)}}.dump()
            << '\n';
     }
   }
@@ -343,6 +365,14 @@ int main(int argc, char** argv) {
   std::printf("tries that ended before the stand (a fall, or a roll or crawl that could not go on), by phase:\n");
   for (const auto& [phase, count] : retries) {
     std::printf("  %5d  in %s (the first of %d runs)\n", count.first, phase.c_str(), count.second);
+  }
+  // Mean seconds per run in each phase, runs that stood apart from the rest: a run that did not
+  // stand ran out of time somewhere, and this says where the time went.
+  std::printf("mean seconds per run in each phase (%d stood / %zu did not):\n", stood, n - static_cast<size_t>(stood));
+  for (const std::string& phase : phaseOrder) {
+    const auto& [stoodSeconds, failedSeconds] = phaseSeconds[phase];
+    std::printf("  %-7s %6.1f / %6.1f\n", phase.c_str(), stood > 0 ? stoodSeconds / stood : 0.0,
+                n > static_cast<size_t>(stood) ? failedSeconds / static_cast<double>(n - stood) : 0.0);
   }
   std::printf("health: %d run(s) unhealthy or without a clear result\n", violations);
   std::printf(
