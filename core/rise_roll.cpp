@@ -18,6 +18,14 @@ constexpr float kChestOverRoll = glm::radians(125.0f);
 // How far past kChestOverRoll the chest of a roll's "over" move aims.
 constexpr float kOverLead = glm::radians(5.0f);
 constexpr float kProneRoll = glm::radians(135.0f);
+// The push off turns the trunk's goal on to kPushOffRoll, but by less than a
+// half turn in one move: the goal is reached by slerp, which takes the shorter
+// way round. A pelvis turned well onto the other side (past -40 deg, as a
+// twisted body lies when the chest picked the roll side) had a goal past
+// 180 deg, and the trunk swung back the other way, whipping the arm overhead
+// to 10-10.7 m/s (stress seeds 382, 470, 502, 510, 584).
+constexpr float kPushOffRoll = glm::radians(140.0f);
+constexpr float kMaxPushOffTurn = glm::radians(150.0f);
 
 // Shoulder flexion past which an arm lies overhead.
 constexpr float kOverheadArm = glm::radians(60.0f);
@@ -181,11 +189,9 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
     case RollStage::kPush:
       // The planted far foot holds its place while the trunk's goal turns on
       // over the near edge of the back: the leg's servos push the hip over.
-      // (Less than half a turn per move: the goal is reached by slerp, which
-      // would take the other way round.)
       move.name = "push off";
       move.duration = 0.8;
-      move.to = RolledTrunk(r, glm::radians(140.0f) - pelvisRoll, 0.0f);
+      move.to = RolledTrunk(r, std::min(kPushOffRoll - pelvisRoll, kMaxPushOffTurn), 0.0f);
       move.rolledTo = kPushedRoll;
       {
         // Held where it is, a tucked foot left hovering (the pelvis half
