@@ -32,6 +32,12 @@ constexpr float kMaxPushOffTurn = glm::radians(150.0f);
 // starts on 0.8 and 2 deg (seeds 102, 173) rolled the other way and got over
 // later or not at all, while the 1000 runs' failed rolls were the same.
 constexpr float kDownhillRollSlope = glm::radians(3.0f);
+// ... and only when it lies across the slope: its left-right axis within 60 deg
+// of the fall line (this is the cosine). Lying along the fall line neither side
+// is downhill; picked by the sign of a near-zero product, three of the four
+// supine starts on 10 deg of bench/start_matrix rolled the other way and did
+// not stand (25 -> 22 of 32).
+constexpr float kAcrossSlope = 0.5f;
 
 // Shoulder flexion past which an arm lies overhead.
 constexpr float kOverheadArm = glm::radians(60.0f);
@@ -108,18 +114,19 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
     return PlanPlace(r);
   }
   if (rollSign_ == 0.0f) {
-    // Roll over the side that is already down. Flat on the back it rolls
-    // downhill on a slope of kDownhillRollSlope or more; on gentler ground the
+    // Roll over the side that is already down. Flat on the back and across a
+    // slope of kDownhillRollSlope or more it rolls downhill; otherwise the
     // seed picks. (Picked by the seed on a slope, half the rolls went uphill:
     // over 1000 stress runs, 147 tries ended in a roll that could not get
-    // over, now 88.)
+    // over, now 95.)
     const glm::vec3 left = chest * glm::vec3(1, 0, 0);
     const float leftDown = -glm::dot(left, ground_.normal);
     const glm::vec3 downhill = Horizontal(ground_.normal);
+    const float across = glm::length(downhill) > 1e-6f ? glm::dot(left, glm::normalize(downhill)) : 0.0f;
     if (std::fabs(leftDown) > 0.3f) {
       rollSign_ = leftDown > 0.0f ? 1.0f : -1.0f;
-    } else if (glm::length(downhill) >= std::sin(kDownhillRollSlope)) {
-      rollSign_ = glm::dot(left, downhill) > 0.0f ? 1.0f : -1.0f;
+    } else if (glm::length(downhill) >= std::sin(kDownhillRollSlope) && std::fabs(across) > kAcrossSlope) {
+      rollSign_ = across > 0.0f ? 1.0f : -1.0f;
     } else {
       rollSign_ = (rng_() & 1u) ? 1.0f : -1.0f;
     }
