@@ -167,6 +167,32 @@ RollOutcome Roll(rise::Posture posture, double heightM, double massKg) {
   return outcome;
 }
 
+// A start run until the place phase takes over from the roll: when that was
+// (< 0 if never), and whether a try went back to settle once the roll had begun.
+struct RollOver {
+  double placeTime = -1.0;
+  bool retried = false;
+};
+
+RollOver RollOverFrom(rise::RiseSpec spec, double maxDurationS) {
+  spec.maxDurationS = maxDurationS;
+  rise::GenerateSettings settings;
+  settings.keepTrace = true;
+  const rise::GeneratedClip result = rise::GenerateClip(spec, settings);
+  REQUIRE(result.health.ok);
+  RollOver roll;
+  bool rolling = false;
+  for (const auto& sample : result.trace) {
+    if (sample.phase == rise::RisePhase::kPlace) {
+      roll.placeTime = sample.time;
+      break;
+    }
+    rolling = rolling || sample.phase == rise::RisePhase::kRoll;
+    roll.retried = roll.retried || (rolling && sample.phase == rise::RisePhase::kSettle);
+  }
+  return roll;
+}
+
 }  // namespace
 
 TEST_SUITE("generate") {
@@ -701,27 +727,11 @@ TEST_CASE("roll: a far leg left straight or in the air is tucked before it pushe
   for (const char* text : starts) {
     const auto spec = rise::RiseSpecFromJson(nlohmann::json::parse(text), "stress.json");
     REQUIRE(spec.IsOk());
-    rise::RiseSpec s = spec.Value();
-    INFO("seed " << s.seed);
-    s.maxDurationS = 14.0;
-    rise::GenerateSettings settings;
-    settings.keepTrace = true;
-    const rise::GeneratedClip result = rise::GenerateClip(s, settings);
-    REQUIRE(result.health.ok);
-    double placeTime = -1.0;
-    bool retried = false;  // back to settle once the roll had begun
-    bool rolling = false;
-    for (const auto& sample : result.trace) {
-      if (sample.phase == rise::RisePhase::kPlace) {
-        placeTime = sample.time;
-        break;
-      }
-      rolling = rolling || sample.phase == rise::RisePhase::kRoll;
-      retried = retried || (rolling && sample.phase == rise::RisePhase::kSettle);
-    }
-    CHECK_FALSE(retried);
-    CHECK(placeTime > 0.0);
-    CHECK(placeTime < 12.5);
+    INFO("seed " << spec.Value().seed);
+    const RollOver roll = RollOverFrom(spec.Value(), 14.0);
+    CHECK_FALSE(roll.retried);
+    CHECK(roll.placeTime > 0.0);
+    CHECK(roll.placeTime < 12.5);
   }
 }
 
@@ -774,27 +784,11 @@ TEST_CASE("roll: a body flat on its back on a slope rolls downhill, so the roll 
   for (const char* text : starts) {
     const auto spec = rise::RiseSpecFromJson(nlohmann::json::parse(text), "stress.json");
     REQUIRE(spec.IsOk());
-    rise::RiseSpec s = spec.Value();
-    INFO("seed " << s.seed);
-    s.maxDurationS = 13.0;
-    rise::GenerateSettings settings;
-    settings.keepTrace = true;
-    const rise::GeneratedClip result = rise::GenerateClip(s, settings);
-    REQUIRE(result.health.ok);
-    double placeTime = -1.0;
-    bool retried = false;  // back to settle once the roll had begun
-    bool rolling = false;
-    for (const auto& sample : result.trace) {
-      if (sample.phase == rise::RisePhase::kPlace) {
-        placeTime = sample.time;
-        break;
-      }
-      rolling = rolling || sample.phase == rise::RisePhase::kRoll;
-      retried = retried || (rolling && sample.phase == rise::RisePhase::kSettle);
-    }
-    CHECK_FALSE(retried);
-    CHECK(placeTime > 0.0);
-    CHECK(placeTime < 12.0);
+    INFO("seed " << spec.Value().seed);
+    const RollOver roll = RollOverFrom(spec.Value(), 13.0);
+    CHECK_FALSE(roll.retried);
+    CHECK(roll.placeTime > 0.0);
+    CHECK(roll.placeTime < 12.0);
   }
 }
 
