@@ -121,11 +121,13 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
     // over, now 95.)
     const glm::vec3 left = chest * glm::vec3(1, 0, 0);
     const float leftDown = -glm::dot(left, ground_.normal);
+    // The ground normal's horizontal part points downhill; its length is the slope's sine.
     const glm::vec3 downhill = Horizontal(ground_.normal);
-    const float across = glm::length(downhill) > 1e-6f ? glm::dot(left, glm::normalize(downhill)) : 0.0f;
+    const bool sloped = glm::length(downhill) >= std::sin(kDownhillRollSlope);
+    const float across = sloped ? glm::dot(left, glm::normalize(downhill)) : 0.0f;
     if (std::fabs(leftDown) > 0.3f) {
       rollSign_ = leftDown > 0.0f ? 1.0f : -1.0f;
-    } else if (glm::length(downhill) >= std::sin(kDownhillRollSlope) && std::fabs(across) > kAcrossSlope) {
+    } else if (std::fabs(across) > kAcrossSlope) {
       rollSign_ = across > 0.0f ? 1.0f : -1.0f;
     } else {
       rollSign_ = (rng_() & 1u) ? 1.0f : -1.0f;
