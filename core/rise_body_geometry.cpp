@@ -105,6 +105,11 @@ glm::vec3 RiseController::HeadingForward(const BodyReading& r) const {
   return SafeNormalize(Horizontal(along), glm::vec3(0.0f, 0.0f, 1.0f));
 }
 
+bool RiseController::FaceDown(const BodyReading& r) const {
+  const glm::vec3 face = r.jointRotations[rig_.chest] * glm::vec3(0, 0, 1);
+  return glm::dot(face, ground_.normal) < -0.7f;
+}
+
 // ---------------------------------------------------------------------------
 // Placement helpers
 

@@ -212,6 +212,8 @@ class RiseController {
   // Where the CoM would come to rest as an inverted pendulum: CoM + velocity / omega.
   glm::vec3 CapturePoint(const BodyReading& reading) const;
   glm::vec3 HeadingForward(const BodyReading& reading) const;
+  // Lying on the front: the chest faces the ground (within about 45 deg).
+  bool FaceDown(const BodyReading& reading) const;
 
   // Placement helpers.
   glm::quat TrunkRotation(const glm::vec3& forward, float pitch) const;

@@ -98,7 +98,6 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   if (OnItsFeet(r)) return PlanRise(r);
   // From rest (the start, or after a fall) a roll starts afresh.
   if (phase_ == RisePhase::kSettle) rollSign_ = 0.0f, rollStage_ = RollStage::kNone, rollMoves_ = 0, placeTries_ = 0;
-  const glm::vec3 face = chest * glm::vec3(0, 0, 1);
   // Face down already: Phase 0 goes straight to placing hands and feet, but
   // an arm lying overhead first comes out round the side as at a roll's end.
   // Swung from overhead to its spot under the shoulder it pressed its bent
@@ -106,7 +105,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   // other hand tipped the body over. In the 51 failed stress runs of seeds
   // 1-150, 27 of 81 pushes started with a hand up, now 12; seeds 1-300 and
   // 301-600 stood 108 and 96, now 116 and 100.
-  if (rollSign_ == 0.0f && glm::dot(face, ground_.normal) < -0.7f) {
+  if (rollSign_ == 0.0f && FaceDown(r)) {
     if (rollStage_ == RollStage::kNone || rollStage_ == RollStage::kArmOut) {
       rollStage_ = rollStage_ == RollStage::kNone ? RollStage::kArmOut : RollStage::kArmTurn;
       if (std::optional<Move> armOut = PlanArmOut(r, rollStage_)) return *armOut;
