@@ -81,8 +81,10 @@ std::string Describe(const physics::StepStatus& status, double time, const Biped
 // the sequential joints' 5-8 mm per joint, a hand or foot landed on the ground showed 2.0-3.6 cm
 // below it in the clip while its box was at most 0.9 cm below in the engine. Below this speed,
 // and in every other phase, the joints are the sequential ones the controller was tuned on: a
-// body laid on the ground never reaches it, so lying starts are unchanged bit for bit (settled
-// with the exact joints, prone starts on a 10 deg slope that stood fell).
+// body laid on its back or front never reaches it, so those starts are unchanged bit for bit
+// (settled with the exact joints throughout, prone starts on a 10 deg slope that stood fell).
+// One laid on its side can topple faster than this, so side starts do change (bench/start_matrix:
+// side_right, 1.50 m, 0 deg no longer stands).
 constexpr float kLandingSpeed = 1.0f;  // m/s
 
 physics::JointSolver JointSolverFor(RisePhase phase, const BodyReading& reading) {
