@@ -181,7 +181,7 @@ bool RiseController::Fallen(const BodyReading& r) const {
     // On one hand or foot, or none, the body is not crawling but tipping over:
     // left to the crawl's servos, a body toppling over a hand down a 13.5 deg
     // slope swung a foot up to 1.4 m and, re-planned there, back down at
-    // 10.6 m/s (stress seed 5189). Counted as a fall it goes limp as the
+    // 12.7 m/s (stress seed 5189; 5.1 m/s now). Counted as a fall it goes limp as the
     // settle holds it. Stress, seeds 5001-5500 / 5501-6000 / 9001-9500: stood
     // 204 / 215 / 193 before, 206 / 217 / 193 after; runs over the 10 m/s
     // bound 4 / 3 / 0 before, 1 / 0 / 0 after (the one left a dropped ragdoll).
