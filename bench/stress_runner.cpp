@@ -188,24 +188,11 @@ RunResult Run(uint64_t seed, double maxDuration) {
     for (const glm::quat& q : track) finite = finite && std::isfinite(q.w) && Finite(glm::vec3(q.x, q.y, q.z));
   }
   if (!finite) run.violations.push_back("non-finite joint position or rotation in the clip");
-  // Body speeds: the centre of every box (one per simulated body), frame to frame.
-  size_t fastBody = 0, fastFrame = 0;
-  std::vector<glm::vec3> previous;
-  for (int f = 0; f < generated.clip.FrameCount() && finite; ++f) {
-    const std::vector<glm::quat> rotations = generated.clip.WorldRotations(f);
-    std::vector<glm::vec3> centres(positions[f].size(), glm::vec3(0.0f));
-    for (size_t j = 0; j < centres.size(); ++j) {
-      const rise::SkeletonJoint& joint = generated.clip.skeleton.joints[j];
-      if (!joint.hasBox) continue;
-      centres[j] = positions[f][j] + rotations[j] * joint.box.center;
-      const double speed = f == 0 ? 0.0 : static_cast<double>(glm::length(centres[j] - previous[j])) * kRecordFps;
-      if (speed > run.maxBodySpeed) run.maxBodySpeed = speed, fastBody = j, fastFrame = static_cast<size_t>(f);
-    }
-    previous = centres;
-  }
+  const rise::FastestBox fastest = finite ? rise::MeasureFastestBox(generated.clip) : rise::FastestBox{};
+  run.maxBodySpeed = fastest.speed;
   if (run.maxBodySpeed > kMaxBodySpeed) {
-    run.overBounds.push_back("body '" + generated.clip.skeleton.joints[fastBody].name + "' " +
-                             Format("moved at %.2f m/s at %.3f s", run.maxBodySpeed, fastFrame / kRecordFps) +
+    run.overBounds.push_back("body '" + generated.clip.skeleton.joints[fastest.body].name + "' " +
+                             Format("moved at %.2f m/s at %.3f s", run.maxBodySpeed, fastest.frame / kRecordFps) +
                              Format(" (bound %.0f m/s)", kMaxBodySpeed));
   }
   if (finite) {

@@ -353,6 +353,24 @@ std::vector<std::vector<glm::vec3>> JointPositionSequence(const Clip& clip) {
   return sequence;
 }
 
+FastestBox MeasureFastestBox(const Clip& clip) {
+  FastestBox fastest;
+  std::vector<glm::vec3> previous;
+  for (int f = 0; f < clip.FrameCount(); ++f) {
+    const std::vector<glm::vec3> positions = clip.WorldPositions(f);
+    const std::vector<glm::quat> rotations = clip.WorldRotations(f);
+    std::vector<glm::vec3> centres(positions.size());
+    for (size_t j = 0; j < centres.size(); ++j) {
+      centres[j] = positions[j] + rotations[j] * clip.skeleton.joints[j].box.center;
+      if (f == 0 || !clip.skeleton.joints[j].hasBox) continue;
+      const double speed = static_cast<double>(glm::length(centres[j] - previous[j])) * clip.fps;
+      if (speed > fastest.speed) fastest = {speed, static_cast<int>(j), f};
+    }
+    previous = std::move(centres);
+  }
+  return fastest;
+}
+
 std::optional<double> MaxPositionDistance(const std::vector<std::vector<glm::vec3>>& a,
                                           const std::vector<std::vector<glm::vec3>>& b) {
   if (a.size() != b.size()) return std::nullopt;

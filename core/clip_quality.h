@@ -140,6 +140,16 @@ QualityReport MeasureClip(const Clip& clip, const QualityOptions& options = {});
 // Every joint's world position on every frame: [frame][joint].
 std::vector<std::vector<glm::vec3>> JointPositionSequence(const Clip& clip);
 
+// The fastest any box's centre moved from one frame to the next. Not a quality bar: a health
+// figure (a simulation blowing up whips a limb) for the stress runner and tests, meaningful
+// when the clip is recorded at the engine's step rate so no fast step falls between frames.
+struct FastestBox {
+  double speed = 0.0;  // m/s
+  int body = -1;       // skeleton joint whose box it is; -1 when no box moved
+  int frame = -1;      // the frame arrived at
+};
+FastestBox MeasureFastestBox(const Clip& clip);
+
 // The largest distance between corresponding entries of two position
 // sequences ([frame][joint], e.g. one clip read back from BVH and from glTF).
 // nullopt when their shapes differ.

@@ -182,6 +182,19 @@ TEST_SUITE("clip_quality") {
     CHECK_FALSE(rise::MeasureClip(clip).jumpOk);
   }
 
+  TEST_CASE("the fastest box: a forearm flipping in one frame swings the hand's box fastest") {
+    rise::Clip clip = StandingClip(31);
+    CHECK(rise::MeasureFastestBox(clip).speed == 0.0);
+    CHECK(rise::MeasureFastestBox(clip).body == -1);
+    const int forearm = clip.skeleton.Find("forearm_l");
+    for (int f = 15; f < 31; ++f) clip.rotations[forearm][f] = glm::angleAxis(glm::radians(180.0f), kX);
+    const rise::FastestBox fastest = rise::MeasureFastestBox(clip);
+    CHECK(clip.skeleton.joints[fastest.body].name == "hand_l");
+    CHECK(fastest.frame == 15);
+    // The hand box's centre is 0.26 + 0.08 m from the elbow: a half turn moves it 0.68 m.
+    CHECK(fastest.speed == doctest::Approx(0.68 * 30.0).epsilon(1e-4));
+  }
+
   TEST_CASE("on a 10 deg slope the bars are measured against the slope plane") {
     rise::Clip clip = RiseClip();
     const glm::quat slope = glm::angleAxis(glm::radians(10.0f), kX);
