@@ -369,7 +369,15 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     if (stalled || rolled) {
       // The body cannot follow this move: plan again from where it is.
       stalledSince_ = -1.0;
-      PlanNext(reading);
+      // A rise that stalls in its squat is planned again from there: the
+      // stand's goal is the full height, and from the squat its servos
+      // launched the body off its feet (stress seed 5760: the CoM up at
+      // 2.4 m/s, a hand whipped to 11.6 m/s).
+      if (stalled && phase_ == RisePhase::kRise) {
+        StartMove(PlanRise(reading));
+      } else {
+        PlanNext(reading);
+      }
     } else if (progress_ >= 1.0f && (lag < kGateStop || rolling)) {
       if (phase_ == RisePhase::kStand) {
         finished_ = Standing(reading.time) && reading.maxBodySpeed < kRestSpeed;

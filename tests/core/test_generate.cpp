@@ -529,6 +529,27 @@ TEST_CASE("a hand let go of as the body sits back, and a foot turned onto its to
   }
 }
 
+TEST_CASE("phase 2: a rise that stalls in its squat is planned again from there, not launched to the stand") {
+  // Stress seed 5760 (issue 8): a tall, light, tired body on a 11.7 deg slope
+  // stalled in a deep squat (pelvis 0.28 m short of its goal); the stand was
+  // planned next, its goal the full height, and the servos threw the body
+  // off its feet (CoM up at 2.4 m/s, a hand at 11.6 m/s), and it fell.
+  const rise::GeneratedClip result = GenerateTraced(
+      R"({"character":{"height_m":1.902,"mass_kg":59.018},"fps":240,"seed":5760,"start":{"drop_height_m":0.548,"joints_deg":{"abdomen":[-5.977,-9.839,10.658],"chest":[-5.826,-10.162,-21.106],"foot_l":[-7.885,1.337],"foot_r":[15.354,22.107],"forearm_l":[49.313],"forearm_r":[25.514],"hand_l":[18.069,-27.308],"hand_r":[-51.823,-33.317],"head":[11.56,25.625,-28.533],"shin_l":[65.989],"shin_r":[11.714],"thigh_l":[15.224,41.989],"thigh_r":[63.479,32.517],"upper_arm_l":[98.627,-21.398],"upper_arm_r":[-52.418,55.357]},"posture":"custom","root_euler_deg":[59.626,107.905,110.557]},"style":{"look_around":0.977,"speed":0.771,"stance_width_m":0.454,"step_height_m":0.11,"sway":0.676,"tiredness":0.861},"terrain":{"friction":0.687,"slope_deg":11.691}})");
+  REQUIRE_FALSE(result.trace.empty());
+  float fastestRise = 0.0f;
+  for (const rise::TraceSample& sample : result.trace) {
+    if (sample.phase == rise::RisePhase::kRise || sample.phase == rise::RisePhase::kStand) {
+      fastestRise = std::max(fastestRise, sample.comVelocity.y);
+    }
+  }
+  const rise::FastestBox fastest = rise::MeasureFastestBox(result.clip);
+  INFO(result.outcome << "; CoM up at " << fastestRise << " m/s; " << fastest.body << " at " << fastest.speed << " m/s");
+  CHECK(fastestRise < 1.0f);
+  CHECK(fastest.speed < 10.0);
+  CHECK(result.stood);
+}
+
 TEST_CASE("phase 1: a hand or foot its hip or shoulder cannot put down ends the try; it does not hang for the rest of the clip") {
   // Stress seed 105 (issue 8): a foot lifted 0.3 m and was put down again and
   // again toward a spot its hip could not take it to, for 25 s, until the
