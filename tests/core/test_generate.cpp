@@ -556,16 +556,17 @@ TEST_CASE("phase 2: a rise leans against the CoM drifting off its heels and does
   // it never stood within its 51 s).
   // Nearly every failed rise of the stress runs fell so; the balance goal now
   // moves against the capture point twice as far (kCaptureGain).
-  const rise::GeneratedClip result = GenerateTraced(
-      R"({"character":{"height_m":1.704,"mass_kg":72.248},"seed":9188,"start":{"drop_height_m":0.245,"joints_deg":{"abdomen":[22.314,13.324,-25.727],"chest":[-7.876,11.916,-23.875],"foot_l":[2.495,28.786],"foot_r":[-23.185,-14.352],"forearm_l":[84.283],"forearm_r":[121.602],"hand_l":[76.409,-16.17],"hand_r":[-34.446,-0.631],"head":[10.578,21.366,-10.306],"shin_l":[73.311],"shin_r":[126.617],"thigh_l":[12.888,11.575],"thigh_r":[90.022,20.655],"upper_arm_l":[144.869,-8.671],"upper_arm_r":[13.87,-15.855]},"posture":"custom","root_euler_deg":[-137.541,-124.926,152.815]},"style":{"look_around":0.308,"speed":0.725,"stance_width_m":0.226,"step_height_m":0.052,"sway":0.302,"tiredness":0.485},"terrain":{"friction":0.346,"slope_deg":8.668}})");
-  REQUIRE_FALSE(result.trace.empty());
+  const auto spec = rise::ParseRiseSpec(
+      R"({"character":{"height_m":1.704,"mass_kg":72.248},"seed":9188,"start":{"drop_height_m":0.245,"joints_deg":{"abdomen":[22.314,13.324,-25.727],"chest":[-7.876,11.916,-23.875],"foot_l":[2.495,28.786],"foot_r":[-23.185,-14.352],"forearm_l":[84.283],"forearm_r":[121.602],"hand_l":[76.409,-16.17],"hand_r":[-34.446,-0.631],"head":[10.578,21.366,-10.306],"shin_l":[73.311],"shin_r":[126.617],"thigh_l":[12.888,11.575],"thigh_r":[90.022,20.655],"upper_arm_l":[144.869,-8.671],"upper_arm_r":[13.87,-15.855]},"posture":"custom","root_euler_deg":[-137.541,-124.926,152.815]},"style":{"look_around":0.308,"speed":0.725,"stance_width_m":0.226,"step_height_m":0.052,"sway":0.302,"tiredness":0.485},"terrain":{"friction":0.346,"slope_deg":8.668}})",
+      "start.json");
+  REQUIRE(spec.IsOk());
+  const rise::GeneratedClip result = rise::GenerateClip(spec.Value());
   // The first rise goes on to the stand.
-  std::string afterRise;
-  for (size_t i = 1; i < result.trace.size() && afterRise.empty(); ++i) {
-    if (result.trace[i - 1].phase == rise::RisePhase::kRise && result.trace[i].phase != rise::RisePhase::kRise) {
-      afterRise = result.trace[i].move;
-    }
-  }
+  const std::vector<rise::PhaseSpan>& phases = result.clip.metadata.phases;
+  const auto firstRise = std::find_if(phases.begin(), phases.end(), [](const rise::PhaseSpan& span) { return span.name == "rise"; });
+  REQUIRE(firstRise != phases.end());
+  REQUIRE(firstRise + 1 != phases.end());
+  const std::string afterRise = (firstRise + 1)->name;
   INFO(result.outcome);
   CHECK(afterRise == "stand");
   CHECK(result.retries == 0);
