@@ -352,6 +352,16 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     // Sitting back ends as soon as the CoM is over the feet: carried on, it
     // would keep going back past the heels.
     if (move_.name == "sit back" && FeetRegion(reading).SignedDistance(Ground(reading.com)) < -kRiseMargin) progress_ = 1.0f;
+    // Heels down with a hand still on the ground ends once the soles are flat
+    // with the CoM within kHeelsDownReach of them: the rise takes it the rest
+    // of the way with the hands held. Carried on, the hands were unloaded
+    // while still planted, rolled onto their fingers and dragged them 4-6 cm
+    // (tired prone starts). (A body whose hands are already up finishes the
+    // move: started early, drifting back at 0.2 m/s, stress seed 9188 sat down.)
+    if (move_.name == "heels down" && progress_ > 0.5f && (reading.touching[0] || reading.touching[1]) &&
+        SolesDown(reading) && FeetRegion(reading).SignedDistance(Ground(reading.com)) < kHeelsDownReach) {
+      progress_ = 1.0f;
+    }
     if (move_.landing >= 0 && reading.touching[move_.landing] &&
         Clearance(reading, static_cast<Limb>(move_.landing)) < kLandedClearance) {
       progress_ = 1.0f;

@@ -249,12 +249,15 @@ class RiseController {
   void HoldAloftUntilOver(const Move& move, const BodyReading& reading, PoseGoal& goal) const;
   // A planted hand that sitting back lifts off the ground goes straight up from where it is.
   void ReleaseLiftedHands(const BodyReading& reading);
-  // The rise's hands, held where they are planted, go to the sides once the
-  // CoM is over the soles (or the hand has left the ground).
+  // The rise's hands, held where they are planted, let go once the CoM is
+  // over the soles (or the hand has left the ground): each lifts off
+  // (LiftOff), then goes to the side.
   void LetGoOverFeet(const BodyReading& reading);
   // A hand's move from where it is to its place at the side in the bind pose,
   // starting at fraction delay of the move.
   LimbMove ArmToSide(const BodyReading& reading, Limb hand, float delay) const;
+  // A hand on the ground let go: straight up from where it is, before it swings.
+  LimbMove LiftOff(const BodyReading& reading, Limb hand) const;
   void StartMove(Move move);
   // A fall: back to settle, to wait for rest and try again.
   void StartOver();

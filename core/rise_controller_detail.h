@@ -32,6 +32,8 @@ inline constexpr float kLandedClearance = 0.02f;  // m above the ground a placed
 
 // Phase 2 starts once the CoM's ground projection is this far inside the feet.
 inline constexpr float kRiseMargin = 0.02f;  // m
+// ... or, from a heels-down with the soles flat, once it is within this of them.
+inline constexpr float kHeelsDownReach = 0.02f;  // m
 
 // Feet this far either side of the hands' midline in the crawl: narrow, so
 // the knees come in between the arms as the feet walk up to the hands and the

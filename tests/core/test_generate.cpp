@@ -489,43 +489,29 @@ TEST_CASE("the slowest style crawls at pace 1: its other moves slow down, the cr
   CHECK(slowPush > 1.8 * push);
 }
 
-TEST_CASE("a hand let go of as the body sits back, and a foot turned onto its toes at a slow pace, leave the ground without sliding") {
+TEST_CASE("a hand let go of as the body sits back or rises, and a foot turned onto its toes at a slow pace, leave the ground without sliding") {
   // bench/prone_variants starts that slid 5.0-5.6 cm: the first two at the
   // tired style's pace as the place turned their feet (the toe edge came back
   // within 1 cm of the ground), the last two as the sit back lifted a hand the
   // arm then pulled back to where it was planted. Since the crawl goes at
-  // least at pace 1 (kMinCrawlPace), the first two's right hand slides 5.1 cm
-  // over push and heels down, a slide of its own; their feet are what is
-  // asked of them here.
-  struct Start {
-    const char* text;
-    bool feetOnly;
-  };
-  for (const Start& start :
-       {Start{R"({"character":{"height_m":1.75,"mass_kg":76},"start":{"posture":"prone","heading_deg":111},"style":{"speed":0.8,"tiredness":0.6},"seed":4,"max_duration_s":40})", true},
-        Start{R"({"character":{"height_m":1.75,"mass_kg":69},"start":{"posture":"prone","heading_deg":333},"style":{"speed":0.8,"tiredness":0.6},"seed":10,"max_duration_s":40})", true},
-        Start{R"({"character":{"height_m":1.8,"mass_kg":97},"start":{"posture":"prone","heading_deg":178},"seed":35})", false},
-        Start{R"({"character":{"height_m":1.75,"mass_kg":90},"start":{"posture":"prone","heading_deg":9},"seed":118})", false}}) {
-    INFO(std::string(start.text));
-    const auto spec = rise::ParseRiseSpec(start.text, "start.json");
+  // least at pace 1 (kMinCrawlPace), the first two's right hand slid 5.1 cm
+  // as the heels came down and the rise let go of it: unloaded but still
+  // planted, it rolled onto its fingers and dragged them. Now the heels-down
+  // hands over to the rise once the CoM is near the soles, and a hand let go
+  // lifts straight up before it swings to the side.
+  for (const char* text :
+       {R"({"character":{"height_m":1.75,"mass_kg":76},"start":{"posture":"prone","heading_deg":111},"style":{"speed":0.8,"tiredness":0.6},"seed":4,"max_duration_s":40})",
+        R"({"character":{"height_m":1.75,"mass_kg":69},"start":{"posture":"prone","heading_deg":333},"style":{"speed":0.8,"tiredness":0.6},"seed":10,"max_duration_s":40})",
+        R"({"character":{"height_m":1.8,"mass_kg":97},"start":{"posture":"prone","heading_deg":178},"seed":35})",
+        R"({"character":{"height_m":1.75,"mass_kg":90},"start":{"posture":"prone","heading_deg":9},"seed":118})"}) {
+    INFO(std::string(text));
+    const auto spec = rise::ParseRiseSpec(text, "start.json");
     REQUIRE(spec.IsOk());
     const rise::GeneratedClip result = rise::GenerateClip(spec.Value());
     REQUIRE(result.stood);
-    const rise::QualityOptions options = rise::QualityOptionsFor(result.clip);
-    const rise::QualityReport quality = rise::MeasureClip(result.clip, options);
+    const rise::QualityReport quality = rise::MeasureClip(result.clip, rise::QualityOptionsFor(result.clip));
     INFO("worst slide " << quality.maxSlip << " m (" << quality.maxSlipEffector << ")");
-    if (!start.feetOnly) {
-      CHECK(quality.passed);
-      continue;
-    }
-    int feet = 0;
-    for (const rise::EffectorSlip& slip : quality.slips) {
-      if (slip.effector.rfind("foot", 0) != 0) continue;
-      INFO(slip.effector << " slid " << slip.slip << " m");
-      CHECK(slip.slip < options.maxSlip);
-      ++feet;
-    }
-    CHECK(feet == 2);
+    CHECK(quality.passed);
   }
 }
 
