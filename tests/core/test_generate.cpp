@@ -604,6 +604,26 @@ TEST_CASE("phase 1: a body left on one hand or foot is falling: it goes limp as 
   CHECK(rise::MeasureFastestBox(result.clip).speed < 8.0);
 }
 
+TEST_CASE("phase 0: a push left on one hand or foot is a fall: the body goes limp, no hand whipped round") {
+  // Stress seed 5821 (issue 8): pushing up again after a caught rise, on a
+  // 10 deg slope, the body slid away downhill on one hand for half a second
+  // while the push went on; the hand whipped to 11.2 m/s, past the stress
+  // runner's 10 m/s bound. Now a push resting on one limb or none is a fall.
+  const auto spec = rise::ParseRiseSpec(
+      R"({"character":{"height_m":1.971,"mass_kg":126.986},"seed":5821,"fps":240,"max_duration_s":24,"start":{"drop_height_m":0.844,"joints_deg":{"abdomen":[18.778,2.453,18.468],"chest":[16.775,16.163,-10.187],"foot_l":[-35.856,3.624],"foot_r":[-3.358,28.21],"forearm_l":[66.521],"forearm_r":[52.072],"hand_l":[41.636,-20.956],"hand_r":[-41.033,-32.53],"head":[-6.883,27.898,-36.395],"shin_l":[90.501],"shin_r":[59.216],"thigh_l":[119.361,5.234],"thigh_r":[100.381,16.37],"upper_arm_l":[123.069,91.652],"upper_arm_r":[151.518,22.762]},"posture":"custom","root_euler_deg":[164.615,17.432,-74.9]},"style":{"look_around":0.337,"speed":2.423,"stance_width_m":0.269,"step_height_m":0.179,"sway":0.814,"tiredness":0.531},"terrain":{"friction":1.183,"slope_deg":10.038}})",
+      "start.json");
+  REQUIRE(spec.IsOk());
+  const rise::GeneratedClip result = rise::GenerateClip(spec.Value());
+  REQUIRE(result.health.ok);
+  const std::vector<rise::PhaseSpan>& phases = result.clip.metadata.phases;
+  int pushesFallen = 0;
+  for (size_t k = 1; k < phases.size(); ++k) pushesFallen += phases[k - 1].name == "push" && phases[k].name == "settle";
+  const rise::FastestBox fastest = rise::MeasureFastestBox(result.clip);
+  INFO(result.outcome << "; fastest " << fastest.speed << " m/s");
+  CHECK(pushesFallen >= 1);
+  CHECK(fastest.speed < 10.0);
+}
+
 TEST_CASE("phase 2: a rise that tips forward off its toes is caught on the hands and goes on from all fours") {
   // Stress seed 80 (issue 8): a short, heavy, tired body rose from a squat
   // with its CoM at its toes, tipped forward and was counted as fallen while
