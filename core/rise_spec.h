@@ -84,7 +84,7 @@ struct RiseSpec {
   std::vector<Disturbance> disturbances;
   uint64_t seed = 1;           // [0, 2^53]
   double fps = 30.0;           // [1, 240]
-  double maxDurationS = 30.0;  // [1, 120]; when the input leaves it out, DefaultMaxDurationS (supine: 30)
+  double maxDurationS = 60.0;  // [1, 120]; when the input leaves it out, DefaultMaxDurationS (supine: 60)
   bool maxDurationGiven = false;  // set by the input (or an override), not DefaultMaxDurationS
   OutputSpec output;
 };

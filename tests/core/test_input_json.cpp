@@ -48,20 +48,20 @@ TEST_SUITE("input_json") {
     CHECK(spec.style.sway == 0.0);
     CHECK(spec.seed == 1u);
     CHECK(spec.fps == 30.0);
-    CHECK(spec.maxDurationS == 30.0);  // the default start is supine: DefaultMaxDurationS
+    CHECK(spec.maxDurationS == 60.0);  // the default start is supine: DefaultMaxDurationS
     CHECK(spec.output.names == "default");
     CHECK(spec.output.rootMotion);
     CHECK(spec.disturbances.empty());
   }
 
   TEST_CASE("max_duration_s left out follows the start and the style's pace; given, it is kept") {
-    CHECK(ParseOk(R"({"start": {"posture": "prone"}})").maxDurationS == 20.0);
-    CHECK(ParseOk(R"({"start": {"posture": "side_left"}})").maxDurationS == 30.0);
-    CHECK(ParseOk(R"({"start": {"posture": "custom"}})").maxDurationS == 30.0);
-    // pace 0.5 x (1 - 0.4 x 0.5) = 0.4: 20 / 0.4 = 50 s; a fast style keeps the base.
+    CHECK(ParseOk(R"({"start": {"posture": "prone"}})").maxDurationS == 35.0);
+    CHECK(ParseOk(R"({"start": {"posture": "side_left"}})").maxDurationS == 60.0);
+    CHECK(ParseOk(R"({"start": {"posture": "custom"}})").maxDurationS == 60.0);
+    // pace 0.5 x (1 - 0.4 x 0.5) = 0.4: 35 / 0.4 = 87.5 s; a fast style keeps the base.
     CHECK(ParseOk(R"({"start": {"posture": "prone"}, "style": {"speed": 0.5, "tiredness": 0.5}})").maxDurationS ==
-          doctest::Approx(50.0));
-    CHECK(ParseOk(R"({"start": {"posture": "prone"}, "style": {"speed": 3}})").maxDurationS == 20.0);
+          doctest::Approx(87.5));
+    CHECK(ParseOk(R"({"start": {"posture": "prone"}, "style": {"speed": 3}})").maxDurationS == 35.0);
     CHECK(ParseOk(R"({"style": {"speed": 0.25, "tiredness": 1}})").maxDurationS == 120.0);
     CHECK(ParseOk(R"({"start": {"posture": "supine"}, "max_duration_s": 12})").maxDurationS == 12.0);
     // A value given in a base (a library's defaults) survives patches that leave it out.
