@@ -70,6 +70,10 @@ constexpr int kMaxRollMoves = 13;
 // face down: 419 / - as committed.)
 constexpr int kMaxPlaceTries = 3;
 constexpr float kPlaceAstray = 0.08f;  // m
+// A place whose CoM moves faster than this, its pelvis this far from its
+// goal, is tumbling: a fall (Fallen).
+constexpr float kPlaceTumbleSpeed = 1.5f;  // m/s
+constexpr float kPlaceTumbleLag = 0.25f;   // m
 
 // A rising or standing body whose pelvis is lower than this, of its standing
 // height, is down.
@@ -195,6 +199,18 @@ bool RiseController::Fallen(const BodyReading& r) const {
   // knees that lifted a hand went on from there: stress seeds 5001-5500 /
   // 5501-6000 / 9001-9500 stood 240 / 236 / 207, now 243 / 247 / 216.
   if (phase_ == RisePhase::kPush) return bearing <= 1;
+  // Placing, the body lies on its front and keeps up with its goal. Fast
+  // (its CoM over 1.5 m/s) and left behind by it, it is tumbling, and a
+  // place driven on swings its limbs round with it: rolling down a 13.5 deg
+  // slope at 2 m/s, its pelvis 0.4-1.5 m from its goal, a foot was whipped to
+  // 10.2 m/s (stress seed 5789; 5910 likewise on 13.9 deg). (At 1 m/s, or by
+  // speed alone, places on a slippery 11.9 deg slope counted as falls that
+  // went on to stand: stress seed 5618.) A catch is a place too, but of a
+  // body that is falling forward onto its hands.
+  if (phase_ == RisePhase::kPlace) {
+    return move_.name != "catch" && glm::length(r.comVelocity) > kPlaceTumbleSpeed &&
+           glm::length(pelvisGoal_ - r.jointPositions[rig_.pelvis]) > kPlaceTumbleLag;
+  }
   if (phase_ == RisePhase::kCrawl) {
     if (putDowns_ > kMaxPutDowns) return true;
     // On one hand or foot, or none, the body is not crawling but tipping over:

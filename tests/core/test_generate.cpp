@@ -628,6 +628,27 @@ TEST_CASE("phase 0: a push left on one hand or foot is a fall: the body goes lim
   CHECK(fastest.speed < 10.0);
 }
 
+TEST_CASE("phase 0: a place of a body tumbling down a slope is a fall: no limb whipped round with it") {
+  // Stress seed 5789 (issue 8): in a late try on a 13.5 deg slope the body
+  // rolled downhill at 2 m/s while it placed its hands and feet; the place
+  // went on, its tracking error grew past 1 m, and a foot was whipped round
+  // at 10.2 m/s, past the stress runner's 10 m/s bound. Now a place whose
+  // CoM moves faster than 1 m/s is a fall: the body goes limp and settles.
+  const auto spec = rise::ParseRiseSpec(
+      R"({"character":{"height_m":2.008,"mass_kg":65.136},"fps":240,"seed":5789,"max_duration_s":40,"start":{"drop_height_m":0.632,"joints_deg":{"abdomen":[6.599,-9.905,4.173],"chest":[25.217,-2.855,-27.95],"foot_l":[10.795,27.569],"foot_r":[-43.8,22.728],"forearm_l":[42.075],"forearm_r":[53.748],"hand_l":[9.483,-1.498],"hand_r":[-59.546,-20.131],"head":[-21.821,-6.35,-59.92],"shin_l":[21.559],"shin_r":[142.86],"thigh_l":[39.475,16.547],"thigh_r":[36.432,-11.84],"upper_arm_l":[96.518,1.997],"upper_arm_r":[91.458,96.182]},"posture":"custom","root_euler_deg":[-28.833,90.542,39.301]},"style":{"look_around":0.837,"speed":2.561,"stance_width_m":0.129,"step_height_m":0.178,"sway":0.314,"tiredness":0.313},"terrain":{"friction":0.571,"slope_deg":13.496}})",
+      "start.json");
+  REQUIRE(spec.IsOk());
+  const rise::GeneratedClip result = rise::GenerateClip(spec.Value());
+  REQUIRE(result.health.ok);
+  const std::vector<rise::PhaseSpan>& phases = result.clip.metadata.phases;
+  int placesFallen = 0;
+  for (size_t k = 1; k < phases.size(); ++k) placesFallen += phases[k - 1].name == "place" && phases[k].name == "settle";
+  const rise::FastestBox fastest = rise::MeasureFastestBox(result.clip);
+  INFO(result.outcome << "; fastest " << fastest.body << " at " << fastest.speed << " m/s");
+  CHECK(placesFallen >= 1);
+  CHECK(fastest.speed < 10.0);
+}
+
 TEST_CASE("phase 2: a rise that tips forward off its toes is caught on the hands and goes on from all fours") {
   // Stress seed 80 (issue 8): a short, heavy, tired body rose from a squat
   // with its CoM at its toes, tipped forward and was counted as fallen while
