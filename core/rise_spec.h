@@ -92,7 +92,7 @@ struct RiseSpec {
 // How fast the style moves, 1 the default: speed (at least 0.25) x (1 - 0.4 tiredness).
 double StylePace(const StyleSpec& style);
 
-// max_duration_s when the input leaves it out: 20 s lying prone, 30 s from any
+// max_duration_s when the input leaves it out: 35 s lying prone, 60 s from any
 // other start (the roll), divided by the style's pace (speed x (1 - 0.4
 // tiredness)) when that is below 1; at most 120 s.
 double DefaultMaxDurationS(const RiseSpec& spec);
