@@ -50,6 +50,15 @@ int PushesOnBothHands(const rise::GeneratedClip& result) {
   return pushes;
 }
 
+// How many spans of the named phase the clip's timeline follows with a
+// settle: tries that ended there in a fall.
+int FallsIn(const rise::GeneratedClip& result, const std::string& phase) {
+  const std::vector<rise::PhaseSpan>& phases = result.clip.metadata.phases;
+  int falls = 0;
+  for (size_t k = 1; k < phases.size(); ++k) falls += phases[k - 1].name == phase && phases[k].name == "settle";
+  return falls;
+}
+
 bool SameClip(const rise::Clip& a, const rise::Clip& b) {
   if (a.FrameCount() != b.FrameCount() || a.rotations.size() != b.rotations.size()) return false;
   if (std::memcmp(a.rootTranslation.data(), b.rootTranslation.data(), a.rootTranslation.size() * sizeof(glm::vec3))) {
@@ -619,9 +628,7 @@ TEST_CASE("phase 0: a push left on one hand or foot is a fall: the body goes lim
   REQUIRE(spec.IsOk());
   const rise::GeneratedClip result = rise::GenerateClip(spec.Value());
   REQUIRE(result.health.ok);
-  const std::vector<rise::PhaseSpan>& phases = result.clip.metadata.phases;
-  int pushesFallen = 0;
-  for (size_t k = 1; k < phases.size(); ++k) pushesFallen += phases[k - 1].name == "push" && phases[k].name == "settle";
+  const int pushesFallen = FallsIn(result, "push");
   const rise::FastestBox fastest = rise::MeasureFastestBox(result.clip);
   INFO(result.outcome << "; fastest " << fastest.speed << " m/s");
   CHECK(pushesFallen >= 1);
@@ -633,16 +640,15 @@ TEST_CASE("phase 0: a place of a body tumbling down a slope is a fall: no limb w
   // rolled downhill at 2 m/s while it placed its hands and feet; the place
   // went on, its tracking error grew past 1 m, and a foot was whipped round
   // at 10.2 m/s, past the stress runner's 10 m/s bound. Now a place whose
-  // CoM moves faster than 1 m/s is a fall: the body goes limp and settles.
+  // CoM moves faster than 1.5 m/s with its pelvis 0.25 m or more from its
+  // goal is a fall: the body goes limp and settles.
   const auto spec = rise::ParseRiseSpec(
       R"({"character":{"height_m":2.008,"mass_kg":65.136},"fps":240,"seed":5789,"max_duration_s":40,"start":{"drop_height_m":0.632,"joints_deg":{"abdomen":[6.599,-9.905,4.173],"chest":[25.217,-2.855,-27.95],"foot_l":[10.795,27.569],"foot_r":[-43.8,22.728],"forearm_l":[42.075],"forearm_r":[53.748],"hand_l":[9.483,-1.498],"hand_r":[-59.546,-20.131],"head":[-21.821,-6.35,-59.92],"shin_l":[21.559],"shin_r":[142.86],"thigh_l":[39.475,16.547],"thigh_r":[36.432,-11.84],"upper_arm_l":[96.518,1.997],"upper_arm_r":[91.458,96.182]},"posture":"custom","root_euler_deg":[-28.833,90.542,39.301]},"style":{"look_around":0.837,"speed":2.561,"stance_width_m":0.129,"step_height_m":0.178,"sway":0.314,"tiredness":0.313},"terrain":{"friction":0.571,"slope_deg":13.496}})",
       "start.json");
   REQUIRE(spec.IsOk());
   const rise::GeneratedClip result = rise::GenerateClip(spec.Value());
   REQUIRE(result.health.ok);
-  const std::vector<rise::PhaseSpan>& phases = result.clip.metadata.phases;
-  int placesFallen = 0;
-  for (size_t k = 1; k < phases.size(); ++k) placesFallen += phases[k - 1].name == "place" && phases[k].name == "settle";
+  const int placesFallen = FallsIn(result, "place");
   const rise::FastestBox fastest = rise::MeasureFastestBox(result.clip);
   INFO(result.outcome << "; fastest " << fastest.body << " at " << fastest.speed << " m/s");
   CHECK(placesFallen >= 1);
