@@ -16,8 +16,9 @@
 //   - no body (box centre) moves faster than kMaxBodySpeed between two steps;
 //   - no box vertex goes deeper than kMaxPenetration below the ground (the slope plane).
 // Standing is reported (stand rate, seeds that did not stand, outcomes histogram, the phases the
-// tries before the stand ended in: a fall, or a roll or crawl that could not go on, and the mean
-// time per phase of the runs that stood and of those that did not), not asserted.
+// tries before the stand ended in: a fall, or a roll or crawl that could not go on, the mean
+// time per phase of the runs that stood and of those that did not, and the stand rate over
+// ranges of each input drawn: where in the input range the controller is weak), not asserted.
 //
 //   stress_runner [--count N] [--first-seed S] [--jobs J] [--max-duration SECONDS (default: left out)] [--seeds a,b,c]
 //                 [--bounds assert|report] [--runs FILE]
@@ -87,6 +88,29 @@ struct RunResult {
   double maxPenetration = 0.0;
   double wallSeconds = 0.0;
 };
+
+// One input drawn by RandomInput and the ranges its stand rate is reported over (bin edges, from
+// the documented minimum to the maximum).
+struct InputAxis {
+  const char* label;
+  const char* pointer;  // JSON pointer into the input
+  std::vector<double> edges;
+};
+
+const std::vector<InputAxis>& InputAxes() {
+  static const std::vector<InputAxis> axes = {
+      {"slope_deg", "/terrain/slope_deg", {0.0, 2.5, 5.0, 10.0, 15.0}},
+      {"friction", "/terrain/friction", {0.3, 0.45, 0.6, 0.9, 1.2}},
+      {"height_m", "/character/height_m", {1.4, 1.55, 1.7, 1.85, 2.1}},
+      {"mass_kg", "/character/mass_kg", {40.0, 70.0, 100.0, 130.0}},
+      {"drop_height_m", "/start/drop_height_m", {0.0, 0.5, 1.0}},
+      {"speed", "/style/speed", {0.25, 1.0, 2.0, 3.0}},
+      {"step_height_m", "/style/step_height_m", {0.02, 0.1, 0.2, 0.3}},
+      {"stance_width_m", "/style/stance_width_m", {0.1, 0.35, 0.6}},
+      {"tiredness", "/style/tiredness", {0.0, 0.5, 1.0}},
+  };
+  return axes;
+}
 
 double Uniform(std::mt19937_64& rng, double lo, double hi) {
   return std::uniform_real_distribution<double>(lo, hi)(rng);
@@ -360,6 +384,25 @@ int main(int argc, char** argv) {
     const auto& [stoodSeconds, failedSeconds] = phaseSeconds[phase];
     std::printf("  %-7s %6.1f / %6.1f\n", phase.c_str(), stood > 0 ? stoodSeconds / stood : 0.0,
                 n > static_cast<size_t>(stood) ? failedSeconds / static_cast<double>(n - stood) : 0.0);
+  }
+  std::printf("stand rate over ranges of each input (stood / runs):\n");
+  std::vector<nlohmann::json> inputs;
+  for (const RunResult& run : results) inputs.push_back(nlohmann::json::parse(run.input));
+  for (const InputAxis& axis : InputAxes()) {
+    const nlohmann::json::json_pointer pointer(axis.pointer);
+    std::vector<std::pair<int, int>> bins(axis.edges.size() - 1);
+    for (size_t r = 0; r < results.size(); ++r) {
+      const double value = inputs[r].at(pointer).get<double>();
+      size_t bin = 0;
+      while (bin + 1 < bins.size() && value >= axis.edges[bin + 1]) ++bin;
+      bins[bin].first += results[r].stood ? 1 : 0;
+      ++bins[bin].second;
+    }
+    std::printf("  %-15s", axis.label);
+    for (size_t b = 0; b < bins.size(); ++b) {
+      std::printf("  %g-%g: %d/%d", axis.edges[b], axis.edges[b + 1], bins[b].first, bins[b].second);
+    }
+    std::printf("\n");
   }
   std::printf("health: %d run(s) unhealthy or without a clear result\n", violations);
   std::printf(
