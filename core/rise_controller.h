@@ -294,9 +294,10 @@ class RiseController {
   float totalMass_ = 0.0f;
   float armReach_ = 0.0f, legReach_ = 0.0f, standPelvisHeight_ = 0.0f;
   float standComHeight_ = 0.0f, crawlComHeight_ = 0.0f, shoulderHalfWidth_ = 0.0f;
-  // The walk-in's lengths for this body, m: kFootWalkDistance, kPikeStart and kFootStep scaled.
+  // The walk-in's lengths for this body, m: kFootWalkDistance, kPikeStart and kFootStep scaled,
+  // and kSitBackBehindSoles scaled down (never up).
   struct WalkInLengths {
-    float handsAhead, pikeStart, footStep;
+    float handsAhead, pikeStart, footStep, sitBack;
   } walkIn_{};
   glm::vec3 toeLocal_{0.0f};  // middle of the foot's toe edge, in the foot frame
 

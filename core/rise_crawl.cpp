@@ -35,10 +35,6 @@ constexpr float kFootLiftHandLineMargin = 0.22f;  // m
 // kShoulderLead of that line (see FootLiftCom).
 constexpr float kShoulderLead = 0.05f;  // m
 
-// The sit back puts the CoM this far behind the middle of the flat soles:
-// far enough in that the rise starts with room to brake a drift either way.
-constexpr float kSitBackBehindSoles = 0.1f;  // m
-
 // CoM height in the squat the crawl ends in, of the standing CoM height. Measured with
 // bench/prone_variants (prone 20 s, supine and sides 30 s): 0.45 stood 69 of 144 starts,
 // 0.50 and 0.55 alike (151 and 149 of 288).
@@ -229,7 +225,7 @@ RiseController::Move RiseController::FinishCrawl(const BodyReading& r) {
   const bool heelsUp = !SolesDown(r);
   Move move = OnAllFours(r, heelsUp ? "heels down" : "sit back", 1.2);
   for (int i = 2; i < 4; ++i) move.limbs[i] = ToePivot(r, static_cast<Limb>(i), 0.0f);
-  const glm::vec3 back = heelsUp ? glm::vec3(0.0f) : heading_ * kSitBackBehindSoles;
+  const glm::vec3 back = heelsUp ? glm::vec3(0.0f) : heading_ * walkIn_.sitBack;
   PlanTrunk(move, Project(ground_, toes - back) + kUp * (kSquatComRatio * standComHeight_), {true, true});
   ++crawlSteps_;
   return move;
