@@ -354,11 +354,15 @@ int main(int argc, char** argv) {
     fastestSpeed = std::max(fastestSpeed, run.maxBodySpeed);
     deepest = std::max(deepest, run.maxPenetration);
   }
+  // Each run's input as JSON, for the runs file and the stand rate over input ranges.
+  std::vector<nlohmann::json> inputs;
+  for (const RunResult& run : results) inputs.push_back(nlohmann::json::parse(run.input));
   if (!options.runsFile.empty()) {
     std::ofstream runs(options.runsFile);
-    for (const RunResult& run : results) {
+    for (size_t r = 0; r < results.size(); ++r) {
+      const RunResult& run = results[r];
       runs << nlohmann::json{{"seed", run.seed}, {"stood", run.stood}, {"time_to_stand", run.timeToStand},
-                             {"outcome", run.outcome}, {"retried_from", run.retriedFrom}, {"phase_seconds", PhaseSecondsJson(run)}, {"input", nlohmann::json::parse(run.input)}}.dump()
+                             {"outcome", run.outcome}, {"retried_from", run.retriedFrom}, {"phase_seconds", PhaseSecondsJson(run)}, {"input", inputs[r]}}.dump()
            << '\n';
     }
   }
@@ -386,8 +390,6 @@ int main(int argc, char** argv) {
                 n > static_cast<size_t>(stood) ? failedSeconds / static_cast<double>(n - stood) : 0.0);
   }
   std::printf("stand rate over ranges of each input (stood / runs):\n");
-  std::vector<nlohmann::json> inputs;
-  for (const RunResult& run : results) inputs.push_back(nlohmann::json::parse(run.input));
   for (const InputAxis& axis : InputAxes()) {
     const nlohmann::json::json_pointer pointer(axis.pointer);
     std::vector<std::pair<int, int>> bins(axis.edges.size() - 1);

@@ -117,7 +117,8 @@ RiseController::RiseController(const BipedDef& def, const RiseSpec& spec, bool t
   // width, the lead between the feet, the shortest step and the CoM's margin
   // behind the hands: 27 / 16, 21 and 34 / 19.
   const float scale = static_cast<float>(spec.character.heightM) / kTunedHeight;
-  walkIn_ = {kFootWalkDistance * scale, kPikeStart * scale, kFootStep * scale, kSitBackBehindSoles * std::min(scale, 1.0f)};
+  walkIn_ = {kFootWalkDistance * scale, kPikeStart * scale, kFootStep * scale,
+             kSitBackBehindSoles * std::min(scale, 1.0f)};
   shoulderHalfWidth_ = std::fabs(sk.BindPositions()[rig_.upper[0]].x);
   // The crawl keeps the hips high (a pike), so knees stay off the ground.
   crawlComHeight_ = 0.5f * standComHeight_;
