@@ -34,15 +34,17 @@ constexpr double kStandHold = 1.2;  // s
 // again and again where its hip could not take it).
 constexpr int kMaxPutDowns = 4;
 
-// A push counts as fallen once it has borne on one hand or foot, or none, this
-// long (Fallen). The push starts with the place's feet often still in the air,
-// on the two hands alone, and a hand at rest on the ground drops out of
-// contact for a step or two: 130 of the 287 push falls of 197 stress runs were
-// called within 0.1 s of the push's start, the body lying still. Stress 3x500
-// (seeds 5001-6000, 9001-9500): tries that ended in the push 925 -> 529,
-// stood 965 -> 974, stood with no retry 645 -> 673. (0.25 s: 965 stood, the
-// falls it spared only came later.)
-constexpr double kPushUnsupportedHold = 0.1;  // s
+// A push or a crawl counts as fallen once it has borne on one hand or foot, or
+// none, this long (Fallen). The push starts with the place's feet often still
+// in the air, on the two hands alone, and a hand at rest on the ground drops
+// out of contact for a step or two: 130 of the 287 push falls of 197 stress
+// runs were called within 0.1 s of the push's start, the body lying still.
+// Stress 3x500 (seeds 5001-6000, 9001-9500), the push: tries that ended in it
+// 925 -> 529, stood 965 -> 974, stood at the first try 645 -> 673 (0.25 s:
+// 965 stood, the falls it spared only came later); the crawl as well: tries
+// that ended in the crawl 563 -> 478, stood 974 -> 987 (up to 10 deg 798 ->
+// 813), at the first try 673 -> 682.
+constexpr double kUnsupportedHold = 0.1;  // s
 
 // How many hands and feet touch the ground.
 int Bearing(const BodyReading& r) { return static_cast<int>(std::count(r.touching.begin(), r.touching.end(), true)); }
@@ -212,10 +214,9 @@ bool RiseController::Fallen(const BodyReading& r) const {
   // when the CoM moved faster than 0.5 m/s, pushes begun on the hands and
   // knees that lifted a hand went on from there: stress seeds 5001-5500 /
   // 5501-6000 / 9001-9500 stood 240 / 236 / 207, now 243 / 247 / 216.
-  // (Update times how long it has been so: kPushUnsupportedHold.)
-  if (phase_ == RisePhase::kPush) {
-    return pushUnsupportedSince_ >= 0.0 && r.time - pushUnsupportedSince_ >= kPushUnsupportedHold;
-  }
+  // (Update times how long it has been so: kUnsupportedHold.)
+  const bool unsupported = unsupportedSince_ >= 0.0 && r.time - unsupportedSince_ >= kUnsupportedHold;
+  if (phase_ == RisePhase::kPush) return unsupported;
   // Placing, the body lies on its front and keeps up with its goal. Fast
   // (its CoM over 1.5 m/s) and left behind by it, it is tumbling, and a
   // place driven on swings its limbs round with it: rolling down a 13.5 deg
@@ -237,7 +238,8 @@ bool RiseController::Fallen(const BodyReading& r) const {
     // settle holds it. Stress, seeds 5001-5500 / 5501-6000 / 9001-9500: stood
     // 204 / 215 / 193 before, 206 / 217 / 193 after; runs over the 10 m/s
     // bound 4 / 3 / 0 before, 1 / 0 / 0 after (the one left a dropped ragdoll).
-    if (bearing <= 1) return true;
+    // Like the push's, once it has lasted kUnsupportedHold.
+    if (unsupported) return true;
     // Down on the ground again (sitting or lying) with the hands and feet no longer bearing.
     // (Squatting on both feet with the CoM over them is not down: it is where the crawl ends.)
     if (pelvisHeight >= 0.22f * standPelvisHeight_ || bearing >= 3) return false;
@@ -328,10 +330,10 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
   RISE_ASSERT(static_cast<int>(reading.jointPositions.size()) == def_.skeleton.JointCount());
   const double dt = hasMove_ || phase_ != RisePhase::kSettle ? reading.time - lastTime_ : 0.0;
   lastTime_ = reading.time;
-  if (phase_ == RisePhase::kPush && Bearing(reading) <= 1) {
-    if (pushUnsupportedSince_ < 0.0) pushUnsupportedSince_ = reading.time;
+  if (OnHandsAndFeet(phase_) && Bearing(reading) <= 1) {
+    if (unsupportedSince_ < 0.0) unsupportedSince_ = reading.time;
   } else {
-    pushUnsupportedSince_ = -1.0;
+    unsupportedSince_ = -1.0;
   }
 
   if (phase_ == RisePhase::kSettle && !hasMove_) {

@@ -311,7 +311,7 @@ class RiseController {
   double lastTime_ = 0.0;
   double restSince_ = -1.0;
   double stalledSince_ = -1.0;
-  double pushUnsupportedSince_ = -1.0;  // the push bears on one hand or foot, or none, since; < 0 not so
+  double unsupportedSince_ = -1.0;  // on hands and feet, bearing on one or none since; < 0 not so
   double standTime_ = -1.0;
   bool finished_ = false;
   int retries_ = 0;
