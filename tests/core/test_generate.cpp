@@ -640,7 +640,7 @@ TEST_CASE("phase 0: a push that starts on its hands alone, one of them dropping 
   // hands with the feet still landing, and a hand at rest left contact for
   // 9 steps (37 ms). Called a fall at the first of them, the body lay down,
   // placed again and fell so five times, and never stood. A push is a fall
-  // only after 0.1 s on one limb or none (kPushUnsupportedHold).
+  // only after 0.1 s on one limb or none (kUnsupportedHold).
   const rise::GeneratedClip result = GenerateTraced(
       R"({"character":{"height_m":1.956,"mass_kg":52.41},"seed":5556,"start":{"drop_height_m":0.327,"joints_deg":{"abdomen":[-23.359,-9.457,-14.884],"chest":[-16.296,-1.603,11.428],"foot_l":[-45.772,-19.15],"foot_r":[-20.465,29.072],"forearm_l":[77.096],"forearm_r":[104.289],"hand_l":[-66.557,17.002],"hand_r":[68.637,-11.075],"head":[39.815,-1.38,-31.427],"shin_l":[49.134],"shin_r":[65.548],"thigh_l":[15.923,21.443],"thigh_r":[38.01,24.864],"upper_arm_l":[57.913,43.222],"upper_arm_r":[-42.847,63.222]},"posture":"custom","root_euler_deg":[-59.642,-68.501,26.783]},"style":{"look_around":0.429,"speed":2.497,"stance_width_m":0.45,"step_height_m":0.029,"sway":0.036,"tiredness":0.96},"terrain":{"friction":0.381,"slope_deg":7.56}})");
   REQUIRE(result.health.ok);
