@@ -52,6 +52,11 @@ int PushesOnBothHands(const rise::GeneratedClip& result) {
 
 // How many spans of the named phase the clip's timeline follows with a
 // settle: tries that ended there in a fall.
+// How many hands and feet touch the ground in a trace sample.
+int Bearing(const rise::TraceSample& sample) {
+  return static_cast<int>(std::count(sample.touching.begin(), sample.touching.end(), true));
+}
+
 int FallsIn(const rise::GeneratedClip& result, const std::string& phase) {
   const std::vector<rise::PhaseSpan>& phases = result.clip.metadata.phases;
   int falls = 0;
@@ -606,7 +611,7 @@ TEST_CASE("phase 1: a body left on one hand or foot is falling: it goes limp as 
   int fallsOffSupport = 0;
   for (size_t s = 1; s < result.trace.size(); ++s) {
     const rise::TraceSample& sample = result.trace[s];
-    const int bearing = static_cast<int>(std::count(sample.touching.begin(), sample.touching.end(), true));
+    const int bearing = Bearing(sample);
     if (result.trace[s - 1].phase == rise::RisePhase::kCrawl && sample.phase == rise::RisePhase::kSettle && bearing <= 1) {
       ++fallsOffSupport;
     }
@@ -646,7 +651,7 @@ TEST_CASE("phase 0: a push that starts on its hands alone, one of them dropping 
   REQUIRE(result.health.ok);
   int unsupported = 0;
   for (const rise::TraceSample& sample : result.trace) {
-    const int bearing = static_cast<int>(std::count(sample.touching.begin(), sample.touching.end(), true));
+    const int bearing = Bearing(sample);
     if (sample.phase == rise::RisePhase::kPush && bearing <= 1) ++unsupported;
   }
   INFO(result.outcome);
