@@ -17,15 +17,16 @@
 //   - no box vertex goes deeper than kMaxPenetration below the ground (the slope plane).
 // Standing is reported (stand rate, seeds that did not stand, outcomes histogram, the phases the
 // tries before the stand ended in: a fall, or a roll or crawl that could not go on, the mean
-// time per phase of the runs that stood and of those that did not, and the stand rate over
-// ranges of each input drawn: where in the input range the controller is weak), not asserted.
+// time per phase of the runs that stood and of those that did not, the stand rate over ranges
+// of each input drawn, and on slopes the stand rate by which way the body faced once it was up
+// on its hands and feet: where in the input range the controller is weak), not asserted.
 //
 //   stress_runner [--count N] [--first-seed S] [--jobs J] [--max-duration SECONDS (default: left out)] [--seeds a,b,c]
 //                 [--bounds assert|report] [--runs FILE]
 // Exit 0 when every run is healthy, 1 when any run is not (listed with its seed and input); the
 // two physical bounds (body speed, box depth) count too unless `--bounds report`. 2 for bad
 // arguments. --runs writes one JSON line per run (seed, stood, outcome, the phases its tries ended
-// in, seconds per phase, input) for analysis.
+// in, seconds per phase, facing, input) for analysis.
 // Runs are a pure function of their seed, so a failing seed reproduces with
 // `--seeds <seed>`.
 #include <algorithm>
@@ -57,6 +58,9 @@ namespace {
 constexpr double kMaxBodySpeed = 10.0;    // m/s, the centre of any box
 constexpr double kMaxPenetration = 0.02;  // m, below the ground plane, any box vertex
 constexpr double kRecordFps = 240.0;      // the engine's step rate (physics/settings.h)
+// The slopes (deg) the stand rate by facing is reported over: steep enough for facing to matter,
+// and issue 8's target range.
+constexpr double kFacingSlopes[2] = {2.5, 10.0};
 
 struct Options {
   int count = 100;
@@ -82,6 +86,10 @@ struct RunResult {
   // Seconds spent in each phase, all tries together, in the order the run first entered them:
   // where a run that did not stand spent its time.
   std::vector<std::pair<std::string, double>> phaseSeconds;
+  // On a slope, the angle (deg) between uphill and the way the body faced (pelvis to head, along
+  // the ground) when it first got onto its hands and feet (the first push); -1 on level ground or
+  // when it never got there. The start pose is random, so this is drawn too, though not as an input.
+  double facingDeg = -1.0;
   std::vector<std::string> violations;  // broken health (tier 3) or result rules; empty when healthy
   std::vector<std::string> overBounds;  // physical bounds broken (body speed, box depth)
   double maxBodySpeed = 0.0;
@@ -176,6 +184,23 @@ std::string Format(const char* format, double a, double b = 0.0) {
   return text;
 }
 
+// FacingDeg of RunResult, from the recorded clip.
+double FacingFromUphill(const rise::Clip& clip, const std::vector<std::vector<glm::vec3>>& positions, double slopeDeg) {
+  // The ground normal leans downhill, so its part along the ground points down the slope.
+  const glm::vec3 normal = rise::GroundPlane(slopeDeg).normal;
+  const glm::vec3 downhill(normal.x, 0.0f, normal.z);
+  if (glm::length(downhill) < 1e-4f) return -1.0;
+  const auto push = std::find_if(clip.metadata.phases.begin(), clip.metadata.phases.end(),
+                                 [](const rise::PhaseSpan& span) { return span.name == "push"; });
+  if (push == clip.metadata.phases.end() || positions.empty()) return -1.0;
+  const size_t frame = std::min(positions.size() - 1, static_cast<size_t>(std::lround(push->start * clip.fps)));
+  const glm::vec3 along = positions[frame][clip.skeleton.Find("head")] - positions[frame][clip.skeleton.Find("pelvis")];
+  const glm::vec3 heading(along.x, 0.0f, along.z);
+  if (glm::length(heading) < 1e-4f) return -1.0;
+  const float cosine = glm::dot(glm::normalize(heading), -glm::normalize(downhill));
+  return glm::degrees(std::acos(std::clamp(cosine, -1.0f, 1.0f)));
+}
+
 RunResult Run(uint64_t seed, double maxDuration) {
   const auto start = std::chrono::steady_clock::now();
   RunResult run;
@@ -212,6 +237,7 @@ RunResult Run(uint64_t seed, double maxDuration) {
     for (const glm::quat& q : track) finite = finite && std::isfinite(q.w) && Finite(glm::vec3(q.x, q.y, q.z));
   }
   if (!finite) run.violations.push_back("non-finite joint position or rotation in the clip");
+  if (finite) run.facingDeg = FacingFromUphill(generated.clip, positions, spec.Value().terrain.slopeDeg);
   const rise::FastestBox fastest = finite ? rise::MeasureFastestBox(generated.clip) : rise::FastestBox{};
   run.maxBodySpeed = fastest.speed;
   if (run.maxBodySpeed > kMaxBodySpeed) {
@@ -362,7 +388,9 @@ int main(int argc, char** argv) {
     for (size_t r = 0; r < results.size(); ++r) {
       const RunResult& run = results[r];
       runs << nlohmann::json{{"seed", run.seed}, {"stood", run.stood}, {"time_to_stand", run.timeToStand},
-                             {"outcome", run.outcome}, {"retried_from", run.retriedFrom}, {"phase_seconds", PhaseSecondsJson(run)}, {"input", inputs[r]}}.dump()
+                             {"outcome", run.outcome}, {"retried_from", run.retriedFrom}, {"phase_seconds", PhaseSecondsJson(run)},
+                             {"facing_deg", run.facingDeg < 0.0 ? nlohmann::json(nullptr) : nlohmann::json(Round3(run.facingDeg))},
+                             {"input", inputs[r]}}.dump()
            << '\n';
     }
   }
@@ -405,6 +433,24 @@ int main(int argc, char** argv) {
       std::printf("  %g-%g: %d/%d", axis.edges[b], axis.edges[b + 1], bins[b].first, bins[b].second);
     }
     std::printf("\n");
+  }
+  // On a slope a body facing downhill has its hands below its feet, and the CoM must go uphill to
+  // get over them; where the roll left the body facing is not an input, so it gets its own line.
+  {
+    const double edges[] = {0.0, 60.0, 120.0, 180.0};
+    const char* names[] = {"uphill", "across", "downhill"};
+    std::pair<int, int> bins[3] = {}, never = {};
+    for (size_t r = 0; r < results.size(); ++r) {
+      const double slope = inputs[r].at("/terrain/slope_deg"_json_pointer).get<double>();
+      if (slope < kFacingSlopes[0] || slope > kFacingSlopes[1]) continue;
+      const double facing = results[r].facingDeg;
+      std::pair<int, int>& bin = facing < 0.0 ? never : bins[facing < edges[1] ? 0 : facing < edges[2] ? 1 : 2];
+      bin.first += results[r].stood ? 1 : 0;
+      ++bin.second;
+    }
+    std::printf("  facing on slopes of %g-%g deg (once up on hands and feet, from uphill):", kFacingSlopes[0], kFacingSlopes[1]);
+    for (int b = 0; b < 3; ++b) std::printf("  %s %g-%g: %d/%d", names[b], edges[b], edges[b + 1], bins[b].first, bins[b].second);
+    std::printf("  never on hands and feet: %d/%d\n", never.first, never.second);
   }
   std::printf("health: %d run(s) unhealthy or without a clear result\n", violations);
   std::printf(
