@@ -278,6 +278,8 @@ class RiseController {
   WeightShare FeedForward(const BodyReading& reading, const glm::vec3& comGoal, std::vector<glm::vec3>& out) const;
   // Height of the lowest corner of a hand or foot above the ground, m.
   float Clearance(const BodyReading& reading, Limb limb) const;
+  // A length tuned on a kTunedHeight body ("m, Scaled"), for this body.
+  float Scaled(float metres) const { return lengthScale_ * metres; }
   // Where a hand or foot touches the ground: the heel of a hand, the toe edge
   // of a foot on its toes, the middle of a flat sole.
   glm::vec3 ContactPoint(const BodyReading& reading, Limb limb) const;
@@ -294,6 +296,8 @@ class RiseController {
   float totalMass_ = 0.0f;
   float armReach_ = 0.0f, legReach_ = 0.0f, standPelvisHeight_ = 0.0f;
   float standComHeight_ = 0.0f, crawlComHeight_ = 0.0f, shoulderHalfWidth_ = 0.0f;
+  // This body's height over kTunedHeight, at most 1: Scaled lengths shrink with it.
+  float lengthScale_ = 1.0f;
   // The walk-in's lengths for this body, m: kFootWalkDistance, kPikeStart and kFootStep scaled,
   // and kSitBackBehindSoles scaled down (never up).
   struct WalkInLengths {

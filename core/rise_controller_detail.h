@@ -27,27 +27,30 @@ inline constexpr float kGateError = 0.06f;  // m: full speed below this
 inline constexpr float kGateStop = 0.20f;   // m: slowest pace at and above this
 inline constexpr double kStallTime = 1.5;   // s a move may lag beyond kGateStop before it is re-planned
 
+// Lengths marked "m, Scaled" are a kTunedHeight body's; a shorter body's are
+// shorter by its height's share (RiseController::Scaled).
+
 inline constexpr float kReachTolerance = 0.01f;   // m a planned limb may miss its place by
 inline constexpr float kLandedClearance = 0.02f;  // m above the ground a placed hand or foot counts as down
 
 // Phase 2 starts once the CoM's ground projection is this far inside the feet.
-inline constexpr float kRiseMargin = 0.02f;  // m
+inline constexpr float kRiseMargin = 0.02f;  // m, Scaled
 // ... or, from a heels-down with the soles flat, once it is within this of them.
-inline constexpr float kHeelsDownReach = 0.02f;  // m
+inline constexpr float kHeelsDownReach = 0.02f;  // m, Scaled
 
 // Feet this far either side of the hands' midline in the crawl: narrow, so
 // the knees come in between the arms as the feet walk up to the hands and the
 // squat the rise starts from is balanced side to side (0.10-0.15 m measured:
 // 11, 14 and 5 of 36 prone starts stood).
-inline constexpr float kCrawlHalfStance = 0.12f;  // m
+inline constexpr float kCrawlHalfStance = 0.12f;  // m, Scaled
 
 // CoM feedback on hands and feet: proportional gain, integral gain (1/s), integral bound.
 inline constexpr float kCrawlComGain = 0.5f;
 inline constexpr float kCrawlComIntegral = 1.0f;
-inline constexpr float kMaxCrawlOffset = 0.06f;  // m
+inline constexpr float kMaxCrawlOffset = 0.06f;  // m, Scaled
 
 // Phase 2's balance in the pose: how far the pelvis may slide and the trunk lean.
-inline constexpr float kMaxBalanceSlide = 0.1f;  // m the pelvis may slide from its planned place
+inline constexpr float kMaxBalanceSlide = 0.1f;  // m, Scaled: how far the pelvis may slide from its planned place
 inline constexpr float kMaxBalanceLean = 1.2f;   // rad the trunk may lean forward of its plan
 inline constexpr float kLeanRate = 0.8f;         // rad/s the balance lean may change
 inline constexpr float kLeanTolerance = 0.002f;  // rad: the balance lean's search stops this close
@@ -60,8 +63,8 @@ inline constexpr float kFootWalkDistance = 0.5f;  // m at kTunedHeight
 inline constexpr float kPikeStart = 1.1f;         // m at kTunedHeight
 inline constexpr float kPikeComRatio = 0.62f;     // CoM height of the pike as the feet come in, of standing
 inline constexpr float kFootStep = 0.3f;          // m at kTunedHeight
-inline constexpr float kFootLead = 0.1f;          // m
-inline constexpr float kMinFootStep = 0.06f;      // m: a reachable step shorter than this ends the walk-in
+inline constexpr float kFootLead = 0.1f;          // m, Scaled
+inline constexpr float kMinFootStep = 0.06f;      // m, Scaled: a reachable step shorter than this ends the walk-in
 
 // The sit back puts the CoM this far behind the middle of the flat soles: far
 // enough in that the rise starts with room to brake a drift either way. A

@@ -12,10 +12,10 @@ namespace {
 
 // A foot farther than this across from its place in the crawl stance
 // (kCrawlHalfStance) steps there first.
-constexpr float kMaxStanceDrift = 0.15f;  // m
+constexpr float kMaxStanceDrift = 0.15f;  // m, Scaled
 
 // A hand that steps back toward the feet at the end of the crawl goes this far.
-constexpr float kHandStepBack = 0.15f;  // m
+constexpr float kHandStepBack = 0.15f;  // m, Scaled
 constexpr float kLandingReach = 0.1f;   // m below the ground a limb being put down aims
 
 // However it goes, the crawl hands over to the rise after this many steps.
@@ -23,17 +23,17 @@ constexpr int kMaxCrawlSteps = 24;
 
 // A limb lifts only with the CoM this far inside the other three's support;
 // the shift before it aims kShiftMargin inside, and is tried this many times.
-constexpr float kLiftMargin = 0.03f;  // m
-constexpr float kShiftMargin = 0.06f;  // m
+constexpr float kLiftMargin = 0.03f;  // m, Scaled
+constexpr float kShiftMargin = 0.06f;  // m, Scaled
 constexpr int kMaxShiftTries = 2;
 
 // While a foot steps, the CoM stays this far behind the hands' line: over it
 // the body pivots on its hands.
-constexpr float kFootLiftHandLineMargin = 0.22f;  // m
+constexpr float kFootLiftHandLineMargin = 0.22f;  // m, Scaled
 
 // ... and so far back that the shoulders, carried along with it, stay within
 // kShoulderLead of that line (see FootLiftCom).
-constexpr float kShoulderLead = 0.05f;  // m
+constexpr float kShoulderLead = 0.05f;  // m, Scaled
 
 // CoM height in the squat the crawl ends in, of the standing CoM height. Measured with
 // bench/prone_variants (prone 20 s, supine and sides 30 s): 0.45 stood 69 of 144 starts,
@@ -41,7 +41,7 @@ constexpr float kShoulderLead = 0.05f;  // m
 constexpr float kSquatComRatio = 0.55f;
 
 // A squat hands over to the rise once the CoM is within this of the soles.
-constexpr float kSitBackReach = 0.05f;  // m
+constexpr float kSitBackReach = 0.05f;  // m, Scaled
 constexpr double kSteadyHold = 0.2;     // s a squat not yet steady holds still before it looks again (0.3: fewer pass every bar)
 constexpr float kFlatSole = glm::radians(12.0f);  // a sole tilted less than this is flat
 
@@ -61,7 +61,7 @@ float RiseController::StanceAcross(const BodyReading& r, Limb foot, const glm::v
   const glm::vec3 left = glm::normalize(glm::cross(kUp, heading_));
   const glm::vec3 hands = 0.5f * (ContactPoint(r, Limb::kHandLeft) + ContactPoint(r, Limb::kHandRight));
   const float side = IsLeft(foot) ? 1.0f : -1.0f;
-  return side * kCrawlHalfStance - glm::dot(point - hands, left);
+  return side * Scaled(kCrawlHalfStance) - glm::dot(point - hands, left);
 }
 
 std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
@@ -81,7 +81,7 @@ std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
   // by the shoulders' lead, rolled starts, whose stance is longer, ended the
   // crawl with the hands ~0.7 m ahead of the ankles and repeated the heels-down
   // until the time ran out: 108 rolled starts stood 85 -> 54; with this 84.)
-  if (move_.name == "heels down" && FeetRegion(r).SignedDistance(Ground(r.com)) >= kSitBackReach) {
+  if (move_.name == "heels down" && FeetRegion(r).SignedDistance(Ground(r.com)) >= Scaled(kSitBackReach)) {
     return {HandsAhead(r, Limb::kHandLeft) >= HandsAhead(r, Limb::kHandRight) ? Limb::kHandLeft : Limb::kHandRight};
   }
   // A foot far to the side of its place steps back across first: every step
@@ -91,13 +91,13 @@ std::vector<Limb> RiseController::StepCandidates(const BodyReading& r) const {
   // other stayed 0.7 m wide (stress seed 33).
   const float driftLeft = std::fabs(StanceAcross(r, Limb::kFootLeft, ContactPoint(r, Limb::kFootLeft)));
   const float driftRight = std::fabs(StanceAcross(r, Limb::kFootRight, ContactPoint(r, Limb::kFootRight)));
-  if (std::max(driftLeft, driftRight) > kMaxStanceDrift) return {driftLeft >= driftRight ? Limb::kFootLeft : Limb::kFootRight};
+  if (std::max(driftLeft, driftRight) > Scaled(kMaxStanceDrift)) return {driftLeft >= driftRight ? Limb::kFootLeft : Limb::kFootRight};
   // By the ankles, as the step length measures them (toe edges can sit askew).
   const float stagger = glm::dot(r.jointPositions[rig_.end[2]] - r.jointPositions[rig_.end[3]], heading_);
   const Limb rear = stagger < 0.0f ? Limb::kFootLeft : Limb::kFootRight;
   const float handsAhead = HandsAhead(r);
-  if (handsAhead <= walkIn_.handsAhead + kMinFootStep || feetIn_) {
-    if (std::fabs(stagger) > kMinFootStep) return {rear};
+  if (handsAhead <= walkIn_.handsAhead + Scaled(kMinFootStep) || feetIn_) {
+    if (std::fabs(stagger) > Scaled(kMinFootStep)) return {rear};
     return {};
   }
   return {rear};
@@ -153,7 +153,7 @@ glm::vec3 RiseController::FootLiftCom(const BodyReading& r, Limb foot) const {
   const float handLine = std::min(glm::dot(hl, forward), glm::dot(hr, forward));
   const glm::vec3 shoulders = 0.5f * (r.jointPositions[rig_.upper[0]] + r.jointPositions[rig_.upper[1]]);
   const float shouldersAhead = glm::dot(Ground(shoulders - r.com), forward);
-  const float margin = std::max(kFootLiftHandLineMargin, shouldersAhead - kShoulderLead);
+  const float margin = std::max(Scaled(kFootLiftHandLineMargin), shouldersAhead - Scaled(kShoulderLead));
   deep -= forward * std::max(0.0f, glm::dot(deep, forward) - (handLine - margin));
   return Project(ground_, glm::vec3(deep.x, 0.0f, deep.y)) + kUp * CrawlComHeight(r);
 }
@@ -167,7 +167,7 @@ std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading&
   auto inside = [&](glm::vec2 from) {
     glm::vec2 goal = stance.Closest(from);
     const glm::vec2 centre = stance.Centroid();
-    for (int k = 0; k < 30 && stance.SignedDistance(goal) > -kShiftMargin; ++k) goal += 0.1f * (centre - goal);
+    for (int k = 0; k < 30 && stance.SignedDistance(goal) > -Scaled(kShiftMargin); ++k) goal += 0.1f * (centre - goal);
     return Project(ground_, glm::vec3(goal.x, 0.0f, goal.y)) + kUp * CrawlComHeight(r);
   };
   std::vector<glm::vec3> goals;
@@ -187,7 +187,7 @@ std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading&
     plan.minHeight = 0.35f * standComHeight_;
     plan.preferredHeight = CrawlComHeight(r);
     plan.maxStep = 0.18f;
-    plan.balanceMargin = kShiftMargin;
+    plan.balanceMargin = Scaled(kShiftMargin);
     plan.Solve();
     goals.push_back(plan.target);
     goals.push_back(inside(Ground(r.com) - forward * 0.05f));
@@ -201,7 +201,7 @@ std::optional<RiseController::Move> RiseController::PlanShift(const BodyReading&
     for (int i = 2; i < 4; ++i) move.limbs[i].toRotation = FootRotation(heading_, heelLift);
     PlanTrunk(move, comGoal, {true, true}, true);
     const glm::vec3 planned = PoseCom(GoalAt(move, 1.0f, BodyReading{}));
-    if (stance.SignedDistance(Ground(planned)) < -kLiftMargin) return move;
+    if (stance.SignedDistance(Ground(planned)) < -Scaled(kLiftMargin)) return move;
   }
   return std::nullopt;
 }
@@ -243,7 +243,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   // rise starts a little short of the soles: its own balance takes the CoM
   // the rest of the way.
   const bool squatting = move_.name == "sit back" || move_.name == "heels down" || move_.name == "steady";
-  if ((steady && (comToFeet < -kRiseMargin || (squatting && comToFeet < kSitBackReach))) ||
+  if ((steady && (comToFeet < -Scaled(kRiseMargin) || (squatting && comToFeet < Scaled(kSitBackReach)))) ||
       crawlSteps_ >= kMaxCrawlSteps) {
     return PlanRise(r);
   }
@@ -252,7 +252,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   // again. Hand steps from there fell back in 10 of 19 failed prone starts;
   // holding, bench/prone_variants 72 (prone 20 s, rolled 30 s) stood 162 -> 210
   // of 288, and prone clips passing every bar went 15 -> 21 of 40.
-  if (squatting && !steady && comToFeet < kSitBackReach) {
+  if (squatting && !steady && comToFeet < Scaled(kSitBackReach)) {
     Move move = OnAllFours(r, "steady", kSteadyHold);
     move.to = move.from;
     ++crawlSteps_;
@@ -264,7 +264,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   // the current one, and after kMaxShiftTries the next candidate is tried.
   std::optional<Limb> step;
   for (const Limb limb : candidates) {
-    if (StanceWithout(r, limb).SignedDistance(Ground(r.com)) < -kLiftMargin) {
+    if (StanceWithout(r, limb).SignedDistance(Ground(r.com)) < -Scaled(kLiftMargin)) {
       step = limb;
       break;
     }
@@ -333,7 +333,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       // StepCandidates.) Where it is along the heading, less the step back,
       // and beside the shoulder's line across it.
       const float side = IsLeft(limb) ? 1.0f : -1.0f;
-      const float back = putDown ? 0.0f : kHandStepBack;
+      const float back = putDown ? 0.0f : Scaled(kHandStepBack);
       const glm::vec3 spot = Project(ground_, FeetCentre(r) + heading_ * (HandsAhead(r, limb) - back) + left * side * shoulderHalfWidth_ * 0.75f);
       m.toRotation = PlantedHandRotation(limb);
       m.to = WristAbove(limb, spot, m.toRotation);
@@ -354,9 +354,9 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       // Feet come in side by side: a step ends at most kFootLead ahead of the other foot.
       const Limb other = limb == Limb::kFootLeft ? Limb::kFootRight : Limb::kFootLeft;
       const float behindOther = glm::dot(r.jointPositions[rig_.end[static_cast<int>(other)]] - r.jointPositions[rig_.end[i]], heading_);
-      nominalFootStep = std::clamp(std::min(handsAhead - walkIn_.handsAhead, behindOther + kFootLead), 0.05f, walkIn_.footStep);
+      nominalFootStep = std::clamp(std::min(handsAhead - walkIn_.handsAhead, behindOther + Scaled(kFootLead)), 0.05f, walkIn_.footStep);
       // In: the rear foot only comes up beside the other.
-      if (handsAhead <= walkIn_.handsAhead + kMinFootStep) nominalFootStep = std::clamp(behindOther, 0.0f, walkIn_.footStep);
+      if (handsAhead <= walkIn_.handsAhead + Scaled(kMinFootStep)) nominalFootStep = std::clamp(behindOther, 0.0f, walkIn_.footStep);
       const float length = fraction * nominalFootStep;
       // From the ankle, not the toe: with no hip twist the foot's yaw follows the
       // leg, so its toe can sit to one side, and stepping from there walked
@@ -385,7 +385,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
   // The feet are as far in as this body bent at the hips lets them come: the
   // hands walk from here.
   if (!IsArm(limb) && !putDown) {
-    feetIn_ = nominalFootStep >= 2.0f * kMinFootStep && glm::dot(best.limbs[i].to - best.limbs[i].from, heading_) < kMinFootStep;
+    feetIn_ = nominalFootStep >= 2.0f * Scaled(kMinFootStep) && glm::dot(best.limbs[i].to - best.limbs[i].from, heading_) < Scaled(kMinFootStep);
   }
   return best;
 }

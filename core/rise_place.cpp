@@ -77,7 +77,7 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
     const float side = IsLeft(foot) ? 1.0f : -1.0f;
     const glm::vec3 hip = LimbRoot(def_.skeleton, rig_, trunk, foot);
     const float hipHalf = std::fabs(glm::dot(hip - move.from.pelvis, left));
-    const glm::vec3 toe = Project(ground_, hip - heading_ * (0.9f * legReach_) + left * side * (kCrawlHalfStance - hipHalf));
+    const glm::vec3 toe = Project(ground_, hip - heading_ * (0.9f * legReach_) + left * side * (Scaled(kCrawlHalfStance) - hipHalf));
     LimbMove& m = move.limbs[i];
     m = HoldLimb(r, foot, false);
     m.toRotation = FootRotation(heading_, glm::radians(80.0f));

@@ -37,7 +37,7 @@ constexpr float kCaptureGain = 2.0f;
 // seed 21; 26 tries fell from the stand in seeds 1-600, now 5). Lower in the
 // rise the drop deepened squats the ankles could not hold (7 tired prone
 // starts fell).
-constexpr float kSoftKnees = 0.02f;     // m
+constexpr float kSoftKnees = 0.02f;     // m, Scaled
 constexpr float kSoftKneesFrom = 0.9f;  // of the standing pelvis height
 
 // PlanTrunk's priorities, as weights of its least-squares residuals (per m, rad).
@@ -55,7 +55,7 @@ constexpr float kMaxHeelLift = 1.2f;  // rad a foot on its toes may lift its hee
 // sit back over the feet while the hands stay on the ground; gently preferred straight.
 constexpr float kMinCurl = -0.15f, kMaxCurl = 1.2f;  // rad
 constexpr float kCurlWeight = 0.05f;
-constexpr float kKneeClearance = 0.15f;  // m the knee joints keep above the ground on hands and feet
+constexpr float kKneeClearance = 0.15f;  // m, Scaled: the knee joints keep this above the ground on hands and feet
 
 // Solves a x = b (a symmetric positive definite) by Cholesky.
 template <size_t N>
@@ -157,7 +157,7 @@ void RiseController::PlanTrunk(Move& move, const glm::vec3& comGoal, const std::
     // plan does not count as supports.
     for (int leg = 2; leg < 4; ++leg) {
       const float height = Height(ground_, pose.worldPositions[rig_.lower[leg]]);
-      r[kKnees + (leg - 2)] = kReachWeight * std::max(0.0f, kKneeClearance - height);
+      r[kKnees + (leg - 2)] = kReachWeight * std::max(0.0f, Scaled(kKneeClearance) - height);
     }
     r[kResiduals - 2] = kPitchWeight * (x[3] - startPitch);
     r[kResiduals - 1] = kCurlWeight * x[5];
@@ -433,12 +433,12 @@ PoseGoal RiseController::GoalAt(const Move& move, float s, const BodyReading& re
       glm::vec3 error = centre - PoseCom(goal);
       error.y = 0.0f;
       slide += error;
-      if (glm::length(slide) > kMaxBalanceSlide) slide *= kMaxBalanceSlide / glm::length(slide);
+      if (glm::length(slide) > Scaled(kMaxBalanceSlide)) slide *= Scaled(kMaxBalanceSlide) / glm::length(slide);
       for (int halving = 0; halving < 5; ++halving, slide *= 0.5f) {
         goal.pelvisPosition = nominal + slide;
         if (FeetFlat(goal)) break;
         if (!upright) continue;
-        goal.pelvisPosition -= kUp * (glm::dot(slide, slide) / (2.0f * legReach_) + kSoftKnees);
+        goal.pelvisPosition -= kUp * (glm::dot(slide, slide) / (2.0f * legReach_) + Scaled(kSoftKnees));
         if (FeetFlat(goal)) break;
       }
       for (int i = 0; i < kLimbCount; ++i) {
