@@ -128,16 +128,17 @@ RiseController::RiseController(const BipedDef& def, const RiseSpec& spec, bool t
   // height: unscaled, none of 9 prone starts of 1.40-1.50 m stood, scaled 6
   // did. Of 45 prone starts of 1.40-2.10 m 19 -> 26 stood and 13 -> 18 passed
   // every bar, of 30 supine starts 12 -> 20 stood; 40 prone starts of
-  // 1.60-1.85 m: 36 -> 32 stood, 22 -> 23 passed. Also scaling the stance
-  // width, the lead between the feet, the shortest step and the CoM's margin
-  // behind the hands: 27 / 16, 21 and 34 / 19.
+  // 1.60-1.85 m: 36 -> 32 stood, 22 -> 23 passed. (Then also scaling, both
+  // ways, the stance width, the lead between the feet, the shortest step and
+  // the CoM's margin behind the hands: 27 / 16, 21 and 34 / 19.)
   const float scale = static_cast<float>(spec.character.heightM) / kTunedHeight;
-  // The margins, reaches and stance lengths the phases plan with ("m, Scaled") shrink with a
-  // shorter body too. Unscaled, bodies under 1.45 m stood 24 of 43 times on slopes under 5 deg
-  // (the rest of the heights 94-100 %), most of their tries falling in the rise out of a squat
-  // set up for longer feet. Scaled: 40 of 43. Stress seeds 5001-6000 and 9001-9500: 987 -> 1030
-  // of 1500 stood, up to 10 deg 813 -> 850 of 973, at the first try 682 -> 733; bodies of
-  // 1.75 m and over are unchanged.
+  // The margins, reaches and stance lengths the phases plan with ("m, Scaled")
+  // shrink with a shorter body, but do not grow with a taller one. Unscaled,
+  // bodies under 1.45 m stood 24 of 43 times on slopes under 5 deg (the other
+  // heights 94-100 %), most tries falling in the rise out of a squat set up
+  // for longer feet; scaled, 40 of 43. Stress seeds 5001-6000 and 9001-9500:
+  // 987 -> 1030 of 1500 stood, up to 10 deg 813 -> 850 of 973, at the first
+  // try 682 -> 733. Grown with a taller body as well: 1012, up to 10 deg 852.
   lengthScale_ = std::min(scale, 1.0f);
   walkIn_ = {kFootWalkDistance * scale, kPikeStart * scale, kFootStep * scale, kSitBackBehindSoles * lengthScale_};
   shoulderHalfWidth_ = std::fabs(sk.BindPositions()[rig_.upper[0]].x);
