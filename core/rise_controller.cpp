@@ -140,7 +140,7 @@ RiseController::RiseController(const BipedDef& def, const RiseSpec& spec, bool t
   // 987 -> 1030 of 1500 stood, up to 10 deg 813 -> 850 of 973, at the first
   // try 682 -> 733. Grown with a taller body as well: 1012, up to 10 deg 852.
   lengthScale_ = std::min(scale, 1.0f);
-  walkIn_ = {kFootWalkDistance * scale, kPikeStart * scale, kFootStep * scale, kSitBackBehindSoles * lengthScale_};
+  walkIn_ = {kFootWalkDistance * scale, kPikeStart * scale, kFootStep * scale, Scaled(kSitBackBehindSoles)};
   shoulderHalfWidth_ = std::fabs(sk.BindPositions()[rig_.upper[0]].x);
   // The crawl keeps the hips high (a pike), so knees stay off the ground.
   crawlComHeight_ = 0.5f * standComHeight_;

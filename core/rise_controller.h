@@ -298,8 +298,8 @@ class RiseController {
   float standComHeight_ = 0.0f, crawlComHeight_ = 0.0f, shoulderHalfWidth_ = 0.0f;
   // This body's height over kTunedHeight, at most 1: Scaled lengths shrink with it.
   float lengthScale_ = 1.0f;
-  // The walk-in's lengths for this body, m: kFootWalkDistance, kPikeStart and kFootStep scaled,
-  // and kSitBackBehindSoles scaled down (never up).
+  // The walk-in's lengths for this body, m: kFootWalkDistance, kPikeStart and kFootStep scaled
+  // with its height, and kSitBackBehindSoles Scaled.
   struct WalkInLengths {
     float handsAhead, pikeStart, footStep, sitBack;
   } walkIn_{};

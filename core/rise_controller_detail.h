@@ -71,7 +71,7 @@ inline constexpr float kMinFootStep = 0.06f;      // m, Scaled: a reachable step
 // shorter body (shorter feet) aims nearer by its height's share: unscaled, the
 // aim of a 1.45 m body was 1 cm inside its heels. Stress seeds 5001-6000 and
 // 9001-9500: 961 -> 965 of 1500 stood (24 runs changed, 14 won, 10 lost).
-inline constexpr float kSitBackBehindSoles = 0.1f;  // m at kTunedHeight, and at most this
+inline constexpr float kSitBackBehindSoles = 0.1f;  // m, Scaled
 
 // The roll (RiseController::RollAngle: 0 on the back, pi on the front): the far
 // foot pushes until the pelvis has turned this far, or has pushed off once
