@@ -94,6 +94,12 @@ constexpr float kPlaceTumbleLag = 0.25f;   // m
 // height, is down.
 constexpr float kDownPelvis = 0.25f;
 
+// A rising or standing body whose CoM is this far past the edge of its feet
+// (along the ground) and moving faster than this is falling, even with the
+// pelvis still up: no ankle or hip strategy brings it back from there.
+constexpr float kOffFeet = 0.3f;        // m
+constexpr float kOffFeetSpeed = 0.8f;   // m/s
+
 // A rise that falls forward off its feet with the pelvis still up puts its
 // hands down (PlanCatch) at most this many times a try before the tip counts
 // as a fall.
@@ -254,6 +260,13 @@ bool RiseController::Fallen(const BodyReading& r) const {
   }
   if (phase_ != RisePhase::kRise && phase_ != RisePhase::kStand) return false;
   if (pelvisHeight < kDownPelvis * standPelvisHeight_) return true;
+  // Tipping off the feet: driven on toward the rise's goal, the servos swung
+  // the arms round with the falling body until the pelvis came down (stress
+  // seed 9370: a 2.04 m body toppled sideways out of its rise, the CoM 0.3 m
+  // past its feet at 1 m/s, and a hand reached 12.65 m/s before the fall
+  // counted). Stress seeds 5001-6000 and 9001-9500 stood 1030 times either way.
+  const glm::vec3 comAlong = r.comVelocity - ground_.normal * glm::dot(r.comVelocity, ground_.normal);
+  if (glm::length(comAlong) > kOffFeetSpeed && comToFeet() > kOffFeet) return true;
   // A chest folded over the knees is how a rise from a squat starts (and what
   // OnItsFeet accepts): down only with the CoM off the feet as well.
   const glm::vec3 up = r.jointRotations[rig_.chest] * kUp;

@@ -165,7 +165,14 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   const bool farFootSet = Clearance(r, farLeg) < kTuckedClearance &&
                           glm::length(r.jointPositions[rig_.end[far]] - r.jointPositions[rig_.upper[far]]) < kTuckedLeg * legReach_;
   const bool firstMove = rollStage_ == RollStage::kNone;
-  if (pelvisRoll < kPushedRoll) stage = firstMove || !farFootSet ? RollStage::kTuck : RollStage::kPush;
+  // The push off swings the near arm overhead while the trunk turns: an arm
+  // left at the side by the moves before (an arm turn after a fall, say) swung
+  // 220 deg in its joints with the trunk and whipped the hand to 12.3 m/s
+  // (stress seed 5600). The tuck brings it up first, with the trunk at rest
+  // (after a tuck or a push off it is up or on its way).
+  const bool armUp = rollStage_ == RollStage::kTuck || rollStage_ == RollStage::kPush ||
+                     RollLimb(r, nearArm, {165, 15, 10, 0, 0}).from.x > kOverheadArm;
+  if (pelvisRoll < kPushedRoll) stage = firstMove || !farFootSet || !armUp ? RollStage::kTuck : RollStage::kPush;
   const bool pushedOff = pelvisRoll > kLiftOffRoll && !r.touching[far];
   if (stage == RollStage::kPush && pushedOff) stage = RollStage::kOver;
   rollStage_ = stage;
