@@ -35,6 +35,17 @@ RiseController::LimbMove RiseController::HoldLimb(const BodyReading& r, Limb lim
   return hold;
 }
 
+RiseController::LimbMove RiseController::SwingInJoints(const BodyReading& r, Limb limb, const BodyPose& pose) const {
+  const int i = static_cast<int>(limb);
+  const std::vector<glm::quat> local = LocalRotations(def_.skeleton, pose.worldRotations);
+  float root[3] = {}, hinge[3] = {};
+  def_.JointAngles(rig_.upper[i], local[rig_.upper[i]], root);
+  def_.JointAngles(rig_.lower[i], local[rig_.lower[i]], hinge);
+  LimbMove m = RollLimb(r, limb, {root[0], root[1], hinge[0], 0, 0});
+  m.toRotation = local[rig_.end[i]];
+  return m;
+}
+
 RiseController::LimbMove RiseController::ToePivot(const BodyReading& r, Limb foot, float heelLift) const {
   const int end = rig_.end[static_cast<int>(foot)];
   LimbMove pivot;

@@ -202,6 +202,10 @@ class RiseController {
   // Geometry of the measured body.
   TrunkPose MeasuredTrunk(const BodyReading& reading) const;
   LimbMove HoldLimb(const BodyReading& reading, Limb limb, bool planted) const;
+  // A limb swung in its joints from where it is to its angles in `pose`, its end
+  // turned to the pose's: a long swing whose straight path would pass the root's
+  // two angles into another branch of their solution.
+  LimbMove SwingInJoints(const BodyReading& reading, Limb limb, const BodyPose& pose) const;
   // A planted foot turning about its toe edge, where it is, to the given heel lift.
   LimbMove ToePivot(const BodyReading& reading, Limb foot, float heelLift) const;
   glm::vec3 FeetCentre(const BodyReading& reading) const;
