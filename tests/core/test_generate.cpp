@@ -24,14 +24,16 @@ rise::RiseSpec ProneSpec(double seconds) {
   return spec;
 }
 
-// The clip of an input file's text (which must load), with its debug trace kept.
-rise::GeneratedClip GenerateTraced(const char* text) {
+// The clip of an input file's text (which must load), its debug trace kept when asked.
+rise::GeneratedClip Generate(const char* text, bool keepTrace = false) {
   const auto spec = rise::ParseRiseSpec(text, "start.json");
   REQUIRE(spec.IsOk());
   rise::GenerateSettings settings;
-  settings.keepTrace = true;
+  settings.keepTrace = keepTrace;
   return rise::GenerateClip(spec.Value(), settings);
 }
+
+rise::GeneratedClip GenerateTraced(const char* text) { return Generate(text, true); }
 
 // Checks that the clip of an input file's text (which must load) stands without a retry.
 void CheckStandsAtFirstTry(const char* text) {
@@ -647,11 +649,8 @@ TEST_CASE("phase 0: a push left on one hand or foot is a fall: the body goes lim
   // half a second while the push went on; the hand whipped to 11.2 m/s, past
   // the stress runner's 10 m/s bound. Now a push resting on one limb or none
   // is a fall.
-  const auto spec = rise::ParseRiseSpec(
-      R"({"character":{"height_m":1.971,"mass_kg":126.986},"seed":5821,"fps":240,"max_duration_s":24,"start":{"drop_height_m":0.844,"joints_deg":{"abdomen":[18.778,2.453,18.468],"chest":[16.775,16.163,-10.187],"foot_l":[-35.856,3.624],"foot_r":[-3.358,28.21],"forearm_l":[66.521],"forearm_r":[52.072],"hand_l":[41.636,-20.956],"hand_r":[-41.033,-32.53],"head":[-6.883,27.898,-36.395],"shin_l":[90.501],"shin_r":[59.216],"thigh_l":[119.361,5.234],"thigh_r":[100.381,16.37],"upper_arm_l":[123.069,91.652],"upper_arm_r":[151.518,22.762]},"posture":"custom","root_euler_deg":[164.615,17.432,-74.9]},"style":{"look_around":0.337,"speed":2.423,"stance_width_m":0.269,"step_height_m":0.179,"sway":0.814,"tiredness":0.531},"terrain":{"friction":1.183,"slope_deg":10.038}})",
-      "start.json");
-  REQUIRE(spec.IsOk());
-  const rise::GeneratedClip result = rise::GenerateClip(spec.Value());
+  const rise::GeneratedClip result = Generate(
+      R"({"character":{"height_m":1.971,"mass_kg":126.986},"seed":5821,"fps":240,"max_duration_s":24,"start":{"drop_height_m":0.844,"joints_deg":{"abdomen":[18.778,2.453,18.468],"chest":[16.775,16.163,-10.187],"foot_l":[-35.856,3.624],"foot_r":[-3.358,28.21],"forearm_l":[66.521],"forearm_r":[52.072],"hand_l":[41.636,-20.956],"hand_r":[-41.033,-32.53],"head":[-6.883,27.898,-36.395],"shin_l":[90.501],"shin_r":[59.216],"thigh_l":[119.361,5.234],"thigh_r":[100.381,16.37],"upper_arm_l":[123.069,91.652],"upper_arm_r":[151.518,22.762]},"posture":"custom","root_euler_deg":[164.615,17.432,-74.9]},"style":{"look_around":0.337,"speed":2.423,"stance_width_m":0.269,"step_height_m":0.179,"sway":0.814,"tiredness":0.531},"terrain":{"friction":1.183,"slope_deg":10.038}})");
   REQUIRE(result.health.ok);
   const int pushesFallen = FallsIn(result, "push");
   const rise::FastestBox fastest = rise::MeasureFastestBox(result.clip);
@@ -690,11 +689,8 @@ TEST_CASE("phase 0: a place of a body tumbling down a slope is a fall: no limb w
   // goal is a fall: the body goes limp and settles. (Since a foot sent far in
   // a place swings there in its joints, an earlier place of this start goes
   // otherwise and the tumbling one ends at 40.4 s, not before 40 s.)
-  const auto spec = rise::ParseRiseSpec(
-      R"({"character":{"height_m":2.008,"mass_kg":65.136},"fps":240,"seed":5789,"max_duration_s":42,"start":{"drop_height_m":0.632,"joints_deg":{"abdomen":[6.599,-9.905,4.173],"chest":[25.217,-2.855,-27.95],"foot_l":[10.795,27.569],"foot_r":[-43.8,22.728],"forearm_l":[42.075],"forearm_r":[53.748],"hand_l":[9.483,-1.498],"hand_r":[-59.546,-20.131],"head":[-21.821,-6.35,-59.92],"shin_l":[21.559],"shin_r":[142.86],"thigh_l":[39.475,16.547],"thigh_r":[36.432,-11.84],"upper_arm_l":[96.518,1.997],"upper_arm_r":[91.458,96.182]},"posture":"custom","root_euler_deg":[-28.833,90.542,39.301]},"style":{"look_around":0.837,"speed":2.561,"stance_width_m":0.129,"step_height_m":0.178,"sway":0.314,"tiredness":0.313},"terrain":{"friction":0.571,"slope_deg":13.496}})",
-      "start.json");
-  REQUIRE(spec.IsOk());
-  const rise::GeneratedClip result = rise::GenerateClip(spec.Value());
+  const rise::GeneratedClip result = Generate(
+      R"({"character":{"height_m":2.008,"mass_kg":65.136},"fps":240,"seed":5789,"max_duration_s":42,"start":{"drop_height_m":0.632,"joints_deg":{"abdomen":[6.599,-9.905,4.173],"chest":[25.217,-2.855,-27.95],"foot_l":[10.795,27.569],"foot_r":[-43.8,22.728],"forearm_l":[42.075],"forearm_r":[53.748],"hand_l":[9.483,-1.498],"hand_r":[-59.546,-20.131],"head":[-21.821,-6.35,-59.92],"shin_l":[21.559],"shin_r":[142.86],"thigh_l":[39.475,16.547],"thigh_r":[36.432,-11.84],"upper_arm_l":[96.518,1.997],"upper_arm_r":[91.458,96.182]},"posture":"custom","root_euler_deg":[-28.833,90.542,39.301]},"style":{"look_around":0.837,"speed":2.561,"stance_width_m":0.129,"step_height_m":0.178,"sway":0.314,"tiredness":0.313},"terrain":{"friction":0.571,"slope_deg":13.496}})");
   REQUIRE(result.health.ok);
   const int placesFallen = FallsIn(result, "place");
   const rise::FastestBox fastest = rise::MeasureFastestBox(result.clip);
@@ -710,11 +706,8 @@ TEST_CASE("phase 0: a foot the place sends far swings there in its joints, not s
   // leg round, the foot at 10.67 m/s (41.3 s), over the stress runner's
   // 10 m/s bound. A foot more than 0.8 m from its spot now swings there in
   // its joints, as an arm brought out from overhead does.
-  const auto spec = rise::ParseRiseSpec(
-      R"({"character":{"height_m":1.805,"mass_kg":121.668},"fps":240,"seed":5132,"max_duration_s":43,"start":{"drop_height_m":0.492,"joints_deg":{"abdomen":[-24.678,-13.669,-19.041],"chest":[17.088,-11.566,-5.239],"foot_l":[19.951,25.321],"foot_r":[-40.657,6.528],"forearm_l":[109.008],"forearm_r":[75.514],"hand_l":[25.322,10.759],"hand_r":[-3.911,10.942],"head":[-2.611,19.1,32.492],"shin_l":[63.773],"shin_r":[147.536],"thigh_l":[19.466,39.611],"thigh_r":[79.34,6.315],"upper_arm_l":[-28.529,25.687],"upper_arm_r":[23.431,50.657]},"posture":"custom","root_euler_deg":[-91.482,25.468,120.747]},"style":{"look_around":0.7,"speed":1.466,"stance_width_m":0.202,"step_height_m":0.189,"sway":0.757,"tiredness":0.977},"terrain":{"friction":0.38,"slope_deg":11.23}})",
-      "start.json");
-  REQUIRE(spec.IsOk());
-  const rise::GeneratedClip result = rise::GenerateClip(spec.Value());
+  const rise::GeneratedClip result = Generate(
+      R"({"character":{"height_m":1.805,"mass_kg":121.668},"fps":240,"seed":5132,"max_duration_s":43,"start":{"drop_height_m":0.492,"joints_deg":{"abdomen":[-24.678,-13.669,-19.041],"chest":[17.088,-11.566,-5.239],"foot_l":[19.951,25.321],"foot_r":[-40.657,6.528],"forearm_l":[109.008],"forearm_r":[75.514],"hand_l":[25.322,10.759],"hand_r":[-3.911,10.942],"head":[-2.611,19.1,32.492],"shin_l":[63.773],"shin_r":[147.536],"thigh_l":[19.466,39.611],"thigh_r":[79.34,6.315],"upper_arm_l":[-28.529,25.687],"upper_arm_r":[23.431,50.657]},"posture":"custom","root_euler_deg":[-91.482,25.468,120.747]},"style":{"look_around":0.7,"speed":1.466,"stance_width_m":0.202,"step_height_m":0.189,"sway":0.757,"tiredness":0.977},"terrain":{"friction":0.38,"slope_deg":11.23}})");
   REQUIRE(result.health.ok);
   INFO(result.outcome);
   CHECK(rise::MeasureFastestBox(result.clip).speed < 9.5);
