@@ -166,7 +166,7 @@ glm::quat RiseController::PlantedHandRotation(Limb hand) const {
 glm::vec3 RiseController::WristAbove(Limb hand, const glm::vec3& groundPoint, const glm::quat& rotation) const {
   const BoneBox& box = def_.skeleton.joints[rig_.end[static_cast<int>(hand)]].box;
   glm::vec3 palmOffset = rotation * box.center;
-  palmOffset -= ground_.normal * glm::dot(palmOffset, ground_.normal);
+  palmOffset = AlongPlane(ground_, palmOffset);
   return WristForPalm(hand, groundPoint + palmOffset, rotation);
 }
 

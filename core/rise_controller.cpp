@@ -265,8 +265,7 @@ bool RiseController::Fallen(const BodyReading& r) const {
   // seed 9370: a 2.04 m body toppled sideways out of its rise, the CoM 0.3 m
   // past its feet at 1 m/s, and a hand reached 12.65 m/s before the fall
   // counted). Stress seeds 5001-6000 and 9001-9500 stood 1030 times either way.
-  const glm::vec3 comAlong = r.comVelocity - ground_.normal * glm::dot(r.comVelocity, ground_.normal);
-  if (glm::length(comAlong) > kOffFeetSpeed && comToFeet() > kOffFeet) return true;
+  if (glm::length(AlongPlane(ground_, r.comVelocity)) > kOffFeetSpeed && comToFeet() > kOffFeet) return true;
   // A chest folded over the knees is how a rise from a squat starts (and what
   // OnItsFeet accepts): down only with the CoM off the feet as well.
   const glm::vec3 up = r.jointRotations[rig_.chest] * kUp;

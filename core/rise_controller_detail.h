@@ -100,5 +100,9 @@ inline float Height(const physics::PlaneShape& plane, const glm::vec3& p) {
 inline glm::vec3 Project(const physics::PlaneShape& plane, const glm::vec3& p) {
   return p - plane.normal * Height(plane, p);
 }
+// A vector's part along the plane (its normal part taken out).
+inline glm::vec3 AlongPlane(const physics::PlaneShape& plane, const glm::vec3& v) {
+  return v - plane.normal * glm::dot(v, plane.normal);
+}
 
 }  // namespace rise::rise_controller_detail

@@ -345,7 +345,7 @@ RiseController::Move RiseController::PlanCrawl(const BodyReading& r) {
       // Toward the step's own spot the first time; once that has failed,
       // straight down from where the limb hangs, the CoM held where it is.
       glm::vec3 across = stepSpot_[i] && putDowns_ == 1 ? *stepSpot_[i] - m.from : glm::vec3(0.0f);
-      across -= ground_.normal * glm::dot(across, ground_.normal);
+      across = AlongPlane(ground_, across);
       m.to = m.from + across - ground_.normal * (Clearance(r, limb) + kLandingReach);
       m.lift = 0.0f;
       move.landing = i;

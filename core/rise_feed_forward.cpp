@@ -51,7 +51,7 @@ RiseController::WeightShare RiseController::FeedForward(const BodyReading& r, co
     // The horizontal push that goes with that pressure point (clipped to the
     // feet, it may be less than wanted): m g / h times the CoM's offset from it.
     balanceForce = totalMass_ * 9.81f / std::max(0.2f, Height(ground_, r.com)) * Horizontal(r.com - pressure);
-    balanceForce -= ground_.normal * glm::dot(balanceForce, ground_.normal);
+    balanceForce = AlongPlane(ground_, balanceForce);
   }
   // Share the weight among planted, touching supports: the least-norm weights
   // whose weighted centre is the pressure point, negatives dropped.
@@ -98,7 +98,7 @@ RiseController::WeightShare RiseController::FeedForward(const BodyReading& r, co
   glm::vec3 virtualForce = balanceForce;
   if (OnHandsAndFeet(phase_)) {
     virtualForce = totalMass_ * (kVirtualStiffness * (comGoal - r.com) - kVirtualDamping * r.comVelocity);
-    virtualForce -= ground_.normal * glm::dot(virtualForce, ground_.normal);
+    virtualForce = AlongPlane(ground_, virtualForce);
     const float limit = kMaxVirtualForce * totalMass_ * 9.81f;
     if (glm::length(virtualForce) > limit) virtualForce *= limit / glm::length(virtualForce);
   }

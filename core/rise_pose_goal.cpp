@@ -308,7 +308,7 @@ void RiseController::HoldAloftUntilOver(const Move& move, const BodyReading& rea
     const LimbMove& limb = move.limbs[i];
     if (limb.mode != LimbMode::kWorld || limb.lift <= 0.0f) continue;
     glm::vec3 away = limb.to - reading.jointPositions[rig_.end[i]];
-    away -= ground_.normal * glm::dot(away, ground_.normal);
+    away = AlongPlane(ground_, away);
     const float aloft = std::min(limb.lift, kLandSlope * glm::length(away));
     const float height = glm::dot(goal.limbs[i].target - limb.to, ground_.normal);
     if (height < aloft) goal.limbs[i].target += ground_.normal * (aloft - height);
