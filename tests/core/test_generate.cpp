@@ -648,9 +648,11 @@ TEST_CASE("phase 0: a push left on one hand or foot is a fall: the body goes lim
   // 10 deg slope, the body slid away downhill on one hand at 1.6-1.9 m/s for
   // half a second while the push went on; the hand whipped to 11.2 m/s, past
   // the stress runner's 10 m/s bound. Now a push resting on one limb or none
-  // is a fall.
+  // is a fall. (Since the roll from the back keeps its near leg aloft that
+  // start goes otherwise; stress seed 5037 on 11.3 deg pushes up on one limb
+  // at 27.4 s and, pushed on without the rule, whips a hand to 12.0 m/s.)
   const rise::GeneratedClip result = Generate(
-      R"({"character":{"height_m":1.971,"mass_kg":126.986},"seed":5821,"fps":240,"max_duration_s":24,"start":{"drop_height_m":0.844,"joints_deg":{"abdomen":[18.778,2.453,18.468],"chest":[16.775,16.163,-10.187],"foot_l":[-35.856,3.624],"foot_r":[-3.358,28.21],"forearm_l":[66.521],"forearm_r":[52.072],"hand_l":[41.636,-20.956],"hand_r":[-41.033,-32.53],"head":[-6.883,27.898,-36.395],"shin_l":[90.501],"shin_r":[59.216],"thigh_l":[119.361,5.234],"thigh_r":[100.381,16.37],"upper_arm_l":[123.069,91.652],"upper_arm_r":[151.518,22.762]},"posture":"custom","root_euler_deg":[164.615,17.432,-74.9]},"style":{"look_around":0.337,"speed":2.423,"stance_width_m":0.269,"step_height_m":0.179,"sway":0.814,"tiredness":0.531},"terrain":{"friction":1.183,"slope_deg":10.038}})");
+      R"({"character":{"height_m":1.403,"mass_kg":101.501},"fps":240.0,"seed":5037,"start":{"drop_height_m":0.117,"joints_deg":{"abdomen":[8.818,-6.815,-16.803],"chest":[12.008,-18.732,-32.664],"foot_l":[-24.545,9.031],"foot_r":[-12.809,3.557],"forearm_l":[146.089],"forearm_r":[113.545],"hand_l":[-2.287,-31.87],"hand_r":[55.871,-33.429],"head":[28.234,39.866,-7.348],"shin_l":[109.852],"shin_r":[147.602],"thigh_l":[116.36,7.326],"thigh_r":[73.396,21.237],"upper_arm_l":[4.079,82.037],"upper_arm_r":[92.205,42.744]},"posture":"custom","root_euler_deg":[40.084,135.143,-64.588]},"style":{"look_around":0.127,"speed":2.84,"stance_width_m":0.372,"step_height_m":0.107,"sway":0.64,"tiredness":0.607},"terrain":{"friction":0.803,"slope_deg":11.294},"max_duration_s":28.5})");
   REQUIRE(result.health.ok);
   const int pushesFallen = FallsIn(result, "push");
   const rise::FastestBox fastest = rise::MeasureFastestBox(result.clip);
@@ -664,9 +666,11 @@ TEST_CASE("phase 0: a push that starts on its hands alone, one of them dropping 
   // hands with the feet still landing, and a hand at rest left contact for
   // 9 steps (37 ms). Called a fall at the first of them, the body lay down,
   // placed again and fell so five times, and never stood. A push is a fall
-  // only after 0.1 s on one limb or none (kUnsupportedHold).
+  // only after 0.1 s on one limb or none (kUnsupportedHold). (Since the roll
+  // from the back keeps its near leg aloft that start goes otherwise; stress
+  // seed 5086's push rests on one limb or none for 14 steps and goes on.)
   const rise::GeneratedClip result = GenerateTraced(
-      R"({"character":{"height_m":1.956,"mass_kg":52.41},"seed":5556,"start":{"drop_height_m":0.327,"joints_deg":{"abdomen":[-23.359,-9.457,-14.884],"chest":[-16.296,-1.603,11.428],"foot_l":[-45.772,-19.15],"foot_r":[-20.465,29.072],"forearm_l":[77.096],"forearm_r":[104.289],"hand_l":[-66.557,17.002],"hand_r":[68.637,-11.075],"head":[39.815,-1.38,-31.427],"shin_l":[49.134],"shin_r":[65.548],"thigh_l":[15.923,21.443],"thigh_r":[38.01,24.864],"upper_arm_l":[57.913,43.222],"upper_arm_r":[-42.847,63.222]},"posture":"custom","root_euler_deg":[-59.642,-68.501,26.783]},"style":{"look_around":0.429,"speed":2.497,"stance_width_m":0.45,"step_height_m":0.029,"sway":0.036,"tiredness":0.96},"terrain":{"friction":0.381,"slope_deg":7.56}})");
+      R"({"character":{"height_m":1.743,"mass_kg":97.692},"seed":5086,"start":{"drop_height_m":0.988,"joints_deg":{"abdomen":[-1.222,11.334,20.951],"chest":[-0.44,-11.385,30.025],"foot_l":[-17.717,-5.09],"foot_r":[-4.685,-5.072],"forearm_l":[27.834],"forearm_r":[93.728],"hand_l":[75.364,-2.754],"hand_r":[44.587,-16.93],"head":[38.851,13.064,-46.936],"shin_l":[96.842],"shin_r":[140.975],"thigh_l":[44.774,27.123],"thigh_r":[102.405,-5.928],"upper_arm_l":[-25.592,4.752],"upper_arm_r":[-53.508,79.885]},"posture":"custom","root_euler_deg":[-135.033,45.924,1.952]},"style":{"look_around":0.683,"speed":0.595,"stance_width_m":0.153,"step_height_m":0.201,"sway":0.708,"tiredness":0.049},"terrain":{"friction":0.577,"slope_deg":2.208}})");
   REQUIRE(result.health.ok);
   int unsupported = 0;
   for (const rise::TraceSample& sample : result.trace) {
@@ -686,11 +690,11 @@ TEST_CASE("phase 0: a place of a body tumbling down a slope is a fall: no limb w
   // went on, its tracking error grew past 1 m, and a foot was whipped round
   // at 10.2 m/s, past the stress runner's 10 m/s bound. Now a place whose
   // CoM moves faster than 1.5 m/s with its pelvis 0.25 m or more from its
-  // goal is a fall: the body goes limp and settles. (Since a foot sent far in
-  // a place swings there in its joints, an earlier place of this start goes
-  // otherwise and the tumbling one ends at 40.4 s, not before 40 s.)
+  // goal is a fall: the body goes limp and settles. (Since the roll from the
+  // back keeps its near leg aloft that start goes otherwise; stress seed 5072
+  // tumbles so in a place at 31.2 s, which goes on without the rule.)
   const rise::GeneratedClip result = Generate(
-      R"({"character":{"height_m":2.008,"mass_kg":65.136},"fps":240,"seed":5789,"max_duration_s":42,"start":{"drop_height_m":0.632,"joints_deg":{"abdomen":[6.599,-9.905,4.173],"chest":[25.217,-2.855,-27.95],"foot_l":[10.795,27.569],"foot_r":[-43.8,22.728],"forearm_l":[42.075],"forearm_r":[53.748],"hand_l":[9.483,-1.498],"hand_r":[-59.546,-20.131],"head":[-21.821,-6.35,-59.92],"shin_l":[21.559],"shin_r":[142.86],"thigh_l":[39.475,16.547],"thigh_r":[36.432,-11.84],"upper_arm_l":[96.518,1.997],"upper_arm_r":[91.458,96.182]},"posture":"custom","root_euler_deg":[-28.833,90.542,39.301]},"style":{"look_around":0.837,"speed":2.561,"stance_width_m":0.129,"step_height_m":0.178,"sway":0.314,"tiredness":0.313},"terrain":{"friction":0.571,"slope_deg":13.496}})");
+      R"({"character":{"height_m":1.896,"mass_kg":96.986},"fps":240.0,"seed":5072,"start":{"drop_height_m":0.898,"joints_deg":{"abdomen":[1.937,17.537,-10.051],"chest":[-18.69,-13.306,23.739],"foot_l":[-2.376,-10.278],"foot_r":[-12.626,21.076],"forearm_l":[101.604],"forearm_r":[70.146],"hand_l":[43.231,-28.308],"hand_r":[74.614,-32.137],"head":[-12.849,26.149,-26.794],"shin_l":[63.56],"shin_r":[0.047],"thigh_l":[26.024,35.352],"thigh_r":[41.322,9.54],"upper_arm_l":[-31.848,36.075],"upper_arm_r":[33.892,5.11]},"posture":"custom","root_euler_deg":[6.997,-137.545,0.475]},"style":{"look_around":0.483,"speed":1.171,"stance_width_m":0.133,"step_height_m":0.052,"sway":0.998,"tiredness":0.914},"terrain":{"friction":1.126,"slope_deg":12.329},"max_duration_s":32})");
   REQUIRE(result.health.ok);
   const int placesFallen = FallsIn(result, "place");
   const rise::FastestBox fastest = rise::MeasureFastestBox(result.clip);
@@ -745,15 +749,17 @@ TEST_CASE("phase 2: a rise that topples off its feet is a fall while the pelvis 
   // pelvis came down, by then the CoM 1.1 m past the feet, and the servos
   // swung a hand round at 12.65 m/s, over the stress runner's 10 m/s bound.
   // A CoM 0.3 m past the feet and moving at 0.8 m/s or more is now a fall.
+  // (Since the roll from the back keeps its near leg aloft that start goes
+  // otherwise; stress seed 5043's rise topples so at 21.4 s.)
   const rise::GeneratedClip result = GenerateTraced(
-      R"({"character":{"height_m":2.044,"mass_kg":101.861},"fps":240,"seed":9370,"max_duration_s":32,"start":{"drop_height_m":0.507,"joints_deg":{"abdomen":[1.209,-1.433,25.3],"chest":[-3.166,-14.6,-19.017],"foot_l":[12.395,-10.244],"foot_r":[16.745,-12.866],"forearm_l":[25.483],"forearm_r":[17.632],"hand_l":[71.824,19.03],"hand_r":[6.265,19.582],"head":[-2.775,-10.235,5.033],"shin_l":[93.935],"shin_r":[71.788],"thigh_l":[94.372,-11.148],"thigh_r":[-9.463,-11.56],"upper_arm_l":[54.802,77.144],"upper_arm_r":[148.775,22.619]},"posture":"custom","root_euler_deg":[45.699,148.358,-35.34]},"style":{"look_around":0.642,"speed":2.799,"stance_width_m":0.481,"step_height_m":0.171,"sway":0.541,"tiredness":0.08},"terrain":{"friction":1.024,"slope_deg":9.229}})");
+      R"({"character":{"height_m":1.782,"mass_kg":46.234},"fps":240.0,"seed":5043,"start":{"drop_height_m":0.372,"joints_deg":{"abdomen":[-4.325,11.032,29.491],"chest":[10.496,7.247,9.783],"foot_l":[-21.053,1.598],"foot_r":[27.605,12.331],"forearm_l":[47.969],"forearm_r":[116.253],"hand_l":[-1.432,-24.568],"hand_r":[9.182,15.135],"head":[29.081,28.744,-41.188],"shin_l":[32.802],"shin_r":[15.419],"thigh_l":[33.737,16.989],"thigh_r":[-25.315,48.109],"upper_arm_l":[-13.343,25.23],"upper_arm_r":[97.951,84.11]},"posture":"custom","root_euler_deg":[-103.451,85.951,-82.663]},"style":{"look_around":0.785,"speed":2.06,"stance_width_m":0.29,"step_height_m":0.159,"sway":0.673,"tiredness":0.804},"terrain":{"friction":0.63,"slope_deg":13.83},"max_duration_s":23})");
   REQUIRE(result.health.ok);
   REQUIRE_FALSE(result.trace.empty());
-  // The rise that topples (from 28.6 s) ends with the CoM just past the 0.3 m.
+  // The rise that topples ends with the CoM just past the 0.3 m.
   float offFeetAtEnd = -1.0f;
   for (size_t s = 1; s < result.trace.size(); ++s) {
     const rise::TraceSample& sample = result.trace[s];
-    if (sample.time > 29.0 && result.trace[s - 1].move == "rise" && sample.move != "rise") {
+    if (sample.time > 21.0 && result.trace[s - 1].move == "rise" && sample.move != "rise") {
       offFeetAtEnd = sample.feetDistance;
       break;
     }
@@ -995,8 +1001,9 @@ TEST_CASE("roll: from the back or a side the body rolls onto its front and the p
   // included; 6.1-6.7 s since the arm's turn and the near arm's swing
   // overhead in the tuck; a retry would cost seconds more), nothing sunk into
   // the ground, no hand or foot whipped round (stress runs once found them at
-  // 10-16 m/s mid-roll), and a foot planted to push the body over not skating
-  // on the ground. (That foot slid 6.2 cm on the supine start while the back
+  // 10-16 m/s mid-roll; the far arm's swing up over the head in the push off
+  // puts its fingertips at 6.1 m/s on the supine start), and a foot planted
+  // to push the body over not skating on the ground. (That foot slid 6.2 cm on the supine start while the back
   // rolled over a near arm kept alongside, a log roll since dropped: the bar
   // is 7 cm, over the clip's 5 cm slip bar.)
   for (const RollStart& start : kRollStarts) {
@@ -1006,7 +1013,7 @@ TEST_CASE("roll: from the back or a side the body rolls onto its front and the p
     CHECK(roll.placeTime < 7.0);
     CHECK(roll.pushed);
     CHECK(roll.penetration <= 0.02);
-    CHECK(roll.limbSpeed <= 6.0);
+    CHECK(roll.limbSpeed <= 6.5);
     CHECK(roll.plantedSlip <= 0.07);
   }
 }
@@ -1120,6 +1127,15 @@ TEST_CASE("roll: the arm left overhead comes out round the side without touching
     CHECK(roll.armTurned);
     CHECK(roll.armOutClearance > 0.01);
   }
+}
+
+TEST_CASE("roll: from the back, the default body turns over without dragging a hand or foot along the ground") {
+  // The clip's contact-slip bar on the roll of the supine start alone. The
+  // near arm overhead slid 14-18 cm as the chest turned onto it, the near leg
+  // 10-20 cm as the hips turned over it; with the arm bent and drawn in and
+  // the leg kept aloft after the push off, 17 of bench/prone_variants' 24
+  // supine starts pass every bar (0 before).
+  CHECK(Roll(rise::Posture::kSupine, 1.75, 70.0).contactSlip < 0.05);
 }
 
 TEST_CASE("roll: a hand or foot on the ground does not drag along it while the body turns over" * doctest::may_fail()) {
