@@ -336,7 +336,7 @@ class RiseController {
   float rollSign_ = 0.0f;                   // +1 rolling onto the left side, -1 onto the right; 0 before the roll
   RollStage rollStage_ = RollStage::kNone;  // the roll's last move
   int rollMoves_ = 0;                       // moves since this roll started
-  bool pushedOff_ = false;                  // this roll has pushed off from the back
+  bool hadPushOff_ = false;                 // this roll has had a push off (it began on the back)
   glm::vec3 heading_{0.0f, 0.0f, 1.0f};
   glm::vec3 balanceOffset_{0.0f};
   float balanceLean_ = 0.0f;

@@ -57,6 +57,9 @@ constexpr std::array<float, 5> kNearArmOverhead{165, -10, 50, 0, 0};
 // the hips until the lie lays the thigh down with the shin up.
 constexpr std::array<float, 5> kNearLegAloft{-20, -20, 30, -20, 0};
 
+// The near leg otherwise: straight along the pelvis, the foot relaxed.
+constexpr std::array<float, 5> kNearLegAlong{5, 0, 4, -20, 0};
+
 }  // namespace
 
 float RiseController::RollAngle(const glm::quat& segment) const {
@@ -109,7 +112,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   // Crouched on both feet with the CoM over them: Phase 2 directly.
   if (OnItsFeet(r)) return PlanRise(r);
   // From rest (the start, or after a fall) a roll starts afresh.
-  if (phase_ == RisePhase::kSettle) rollSign_ = 0.0f, rollStage_ = RollStage::kNone, rollMoves_ = 0, placeTries_ = 0, pushedOff_ = false;
+  if (phase_ == RisePhase::kSettle) rollSign_ = 0.0f, rollStage_ = RollStage::kNone, rollMoves_ = 0, placeTries_ = 0, hadPushOff_ = false;
   // Face down already: Phase 0 goes straight to placing hands and feet, but
   // an arm lying overhead first comes out round the side as at a roll's end.
   // Swung from overhead to its spot under the shoulder it pressed its bent
@@ -205,7 +208,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   // since that move ends with the arm straight, alongside stood fewer:
   // bench/prone_variants-style harness, 48 supine at 30 s, 36 against 45.)
   set(nearArm, RollLimb(r, nearArm, kNearArmOverhead));
-  set(nearLeg, RollLimb(r, nearLeg, {5, 0, 4, -20, 0}));
+  set(nearLeg, RollLimb(r, nearLeg, kNearLegAlong));
   // The far arm's angles in each move, the chest's lead, the turn at which the
   // lie follows and the over's pace were set by a sweep over bench/prone_variants'
   // 24 supine and 24 side_left starts, scored by how far hands and feet slid
@@ -232,7 +235,6 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       // way, so the heel sweeps well below the ankle: twice a step's lift.
       foot.lift = 2.0f * static_cast<float>(spec_.style.stepHeightM);
       set(farLeg, foot);
-      set(nearArm, RollLimb(r, nearArm, kNearArmOverhead));
       set(farArm, RollLimb(r, farArm, {35, 8, 10, 0, 0}));
       break;
     }
@@ -252,7 +254,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       }
       // The far arm, part way up since the tuck, swings on over the head and out.
       set(farArm, RollLimb(r, farArm, {150, 50, 10, 0, 0}));
-      pushedOff_ = true;
+      hadPushOff_ = true;
       break;
     case RollStage::kOver: {
       // Past the side: the chest leads over onto the front, the top arm comes
@@ -279,7 +281,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       // straightens under the turning pelvis with a lift (held to its angles
       // alone its ankle's goal went 5-8 cm into the ground, and the foot was
       // pushed along it). After a push off it is in the air and stays there.
-      set(nearLeg, swing(nearLeg, pushedOff_ ? kNearLegAloft : std::array<float, 5>{5, 0, 4, -20, 0}));
+      set(nearLeg, swing(nearLeg, hadPushOff_ ? kNearLegAloft : kNearLegAlong));
       break;
     }
     case RollStage::kLie:

@@ -648,8 +648,8 @@ TEST_CASE("phase 0: a push left on one hand or foot is a fall: the body goes lim
   // 10 deg slope, the body slid away downhill on one hand at 1.6-1.9 m/s for
   // half a second while the push went on; the hand whipped to 11.2 m/s, past
   // the stress runner's 10 m/s bound. Now a push resting on one limb or none
-  // is a fall. (Since the roll from the back keeps its near leg aloft that
-  // start goes otherwise; stress seed 5037 on 11.3 deg pushes up on one limb
+  // is a fall. (Since the roll was retuned for the slip bar that start goes
+  // otherwise; stress seed 5037 on 11.3 deg pushes up on one limb
   // at 27.4 s and, pushed on without the rule, whips a hand to 12.0 m/s.)
   const rise::GeneratedClip result = Generate(
       R"({"character":{"height_m":1.403,"mass_kg":101.501},"fps":240.0,"seed":5037,"start":{"drop_height_m":0.117,"joints_deg":{"abdomen":[8.818,-6.815,-16.803],"chest":[12.008,-18.732,-32.664],"foot_l":[-24.545,9.031],"foot_r":[-12.809,3.557],"forearm_l":[146.089],"forearm_r":[113.545],"hand_l":[-2.287,-31.87],"hand_r":[55.871,-33.429],"head":[28.234,39.866,-7.348],"shin_l":[109.852],"shin_r":[147.602],"thigh_l":[116.36,7.326],"thigh_r":[73.396,21.237],"upper_arm_l":[4.079,82.037],"upper_arm_r":[92.205,42.744]},"posture":"custom","root_euler_deg":[40.084,135.143,-64.588]},"style":{"look_around":0.127,"speed":2.84,"stance_width_m":0.372,"step_height_m":0.107,"sway":0.64,"tiredness":0.607},"terrain":{"friction":0.803,"slope_deg":11.294},"max_duration_s":28.5})");
@@ -667,8 +667,8 @@ TEST_CASE("phase 0: a push that starts on its hands alone, one of them dropping 
   // 9 steps (37 ms). Called a fall at the first of them, the body lay down,
   // placed again and fell so five times, and never stood. A push is a fall
   // only after 0.1 s on one limb or none (kUnsupportedHold). (Since the roll
-  // from the back keeps its near leg aloft that start goes otherwise; stress
-  // seed 5086's push rests on one limb or none for 14 steps and goes on.)
+  // was retuned for the slip bar that start goes otherwise; stress seed
+  // 5086's push rests on one limb or none for 14 steps and goes on.)
   const rise::GeneratedClip result = GenerateTraced(
       R"({"character":{"height_m":1.743,"mass_kg":97.692},"seed":5086,"start":{"drop_height_m":0.988,"joints_deg":{"abdomen":[-1.222,11.334,20.951],"chest":[-0.44,-11.385,30.025],"foot_l":[-17.717,-5.09],"foot_r":[-4.685,-5.072],"forearm_l":[27.834],"forearm_r":[93.728],"hand_l":[75.364,-2.754],"hand_r":[44.587,-16.93],"head":[38.851,13.064,-46.936],"shin_l":[96.842],"shin_r":[140.975],"thigh_l":[44.774,27.123],"thigh_r":[102.405,-5.928],"upper_arm_l":[-25.592,4.752],"upper_arm_r":[-53.508,79.885]},"posture":"custom","root_euler_deg":[-135.033,45.924,1.952]},"style":{"look_around":0.683,"speed":0.595,"stance_width_m":0.153,"step_height_m":0.201,"sway":0.708,"tiredness":0.049},"terrain":{"friction":0.577,"slope_deg":2.208}})");
   REQUIRE(result.health.ok);
@@ -690,8 +690,8 @@ TEST_CASE("phase 0: a place of a body tumbling down a slope is a fall: no limb w
   // went on, its tracking error grew past 1 m, and a foot was whipped round
   // at 10.2 m/s, past the stress runner's 10 m/s bound. Now a place whose
   // CoM moves faster than 1.5 m/s with its pelvis 0.25 m or more from its
-  // goal is a fall: the body goes limp and settles. (Since the roll from the
-  // back keeps its near leg aloft that start goes otherwise; stress seed 5072
+  // goal is a fall: the body goes limp and settles. (Since the roll was
+  // retuned for the slip bar that start goes otherwise; stress seed 5072
   // tumbles so in a place at 31.2 s, which goes on without the rule.)
   const rise::GeneratedClip result = Generate(
       R"({"character":{"height_m":1.896,"mass_kg":96.986},"fps":240.0,"seed":5072,"start":{"drop_height_m":0.898,"joints_deg":{"abdomen":[1.937,17.537,-10.051],"chest":[-18.69,-13.306,23.739],"foot_l":[-2.376,-10.278],"foot_r":[-12.626,21.076],"forearm_l":[101.604],"forearm_r":[70.146],"hand_l":[43.231,-28.308],"hand_r":[74.614,-32.137],"head":[-12.849,26.149,-26.794],"shin_l":[63.56],"shin_r":[0.047],"thigh_l":[26.024,35.352],"thigh_r":[41.322,9.54],"upper_arm_l":[-31.848,36.075],"upper_arm_r":[33.892,5.11]},"posture":"custom","root_euler_deg":[6.997,-137.545,0.475]},"style":{"look_around":0.483,"speed":1.171,"stance_width_m":0.133,"step_height_m":0.052,"sway":0.998,"tiredness":0.914},"terrain":{"friction":1.126,"slope_deg":12.329},"max_duration_s":32})");
@@ -749,8 +749,8 @@ TEST_CASE("phase 2: a rise that topples off its feet is a fall while the pelvis 
   // pelvis came down, by then the CoM 1.1 m past the feet, and the servos
   // swung a hand round at 12.65 m/s, over the stress runner's 10 m/s bound.
   // A CoM 0.3 m past the feet and moving at 0.8 m/s or more is now a fall.
-  // (Since the roll from the back keeps its near leg aloft that start goes
-  // otherwise; stress seed 5043's rise topples so at 21.4 s.)
+  // (Since the roll was retuned for the slip bar that start goes otherwise;
+  // stress seed 5043's rise topples so at 21.4 s.)
   const rise::GeneratedClip result = GenerateTraced(
       R"({"character":{"height_m":1.782,"mass_kg":46.234},"fps":240.0,"seed":5043,"start":{"drop_height_m":0.372,"joints_deg":{"abdomen":[-4.325,11.032,29.491],"chest":[10.496,7.247,9.783],"foot_l":[-21.053,1.598],"foot_r":[27.605,12.331],"forearm_l":[47.969],"forearm_r":[116.253],"hand_l":[-1.432,-24.568],"hand_r":[9.182,15.135],"head":[29.081,28.744,-41.188],"shin_l":[32.802],"shin_r":[15.419],"thigh_l":[33.737,16.989],"thigh_r":[-25.315,48.109],"upper_arm_l":[-13.343,25.23],"upper_arm_r":[97.951,84.11]},"posture":"custom","root_euler_deg":[-103.451,85.951,-82.663]},"style":{"look_around":0.785,"speed":2.06,"stance_width_m":0.29,"step_height_m":0.159,"sway":0.673,"tiredness":0.804},"terrain":{"friction":0.63,"slope_deg":13.83},"max_duration_s":23})");
   REQUIRE(result.health.ok);
@@ -1003,7 +1003,8 @@ TEST_CASE("roll: from the back or a side the body rolls onto its front and the p
   // the ground, no hand or foot whipped round (stress runs once found them at
   // 10-16 m/s mid-roll; the far arm's swing up over the head in the push off
   // puts its fingertips at 6.1 m/s on the supine start), and a foot planted
-  // to push the body over not skating on the ground. (That foot slid 6.2 cm on the supine start while the back
+  // to push the body over not skating on the ground. (That foot slid 6.2 cm
+  // on the supine start while the back
   // rolled over a near arm kept alongside, a log roll since dropped: the bar
   // is 7 cm, over the clip's 5 cm slip bar.)
   for (const RollStart& start : kRollStarts) {
