@@ -22,9 +22,9 @@ constexpr float kTouchForce = 1.0f;  // N
 
 // Builds what the controller reads from the simulated biped.
 void ReadBody(const Biped& biped, const physics::World& world, const BodyRig& rig,
-              std::vector<physics::ContactInfo>& scratch, BodyReading& reading) {
+              std::vector<physics::ContactInfo>& scratch, BodyReading& reading, double clipStart = 0.0) {
   const std::vector<physics::Transform> joints = biped.JointWorldTransforms();
-  reading.time = world.Time();
+  reading.time = world.Time() - clipStart;
   reading.jointPositions.resize(joints.size());
   reading.jointRotations.resize(joints.size());
   for (size_t j = 0; j < joints.size(); ++j) {
@@ -87,6 +87,15 @@ std::string Describe(const physics::StepStatus& status, double time, const Biped
 // side_right, 1.50 m, 0 deg no longer stands).
 constexpr float kLandingSpeed = 1.0f;  // m/s
 
+// A posture is laid on the ground by its lowest corner, not by how it would lie: one on its side
+// touched down on its top foot, dropped 5-7 cm onto its hip and shoulder and crept 3-4 cm for a
+// second while the settle held it, and the clip recorded that (the top foot's slide was 4 cm of
+// the 5 cm bar before the roll began). So a laid-down start is held as the settle holds a body
+// (RiseController::HoldAsItLies) until it lies still, for at most this long, and the clip begins
+// there. A drop (drop_height_m > 0) is recorded as it falls, and a custom start as it was given:
+// it may be a crouch on the feet, which the controller takes as it stands (it would sag here).
+constexpr double kMaxLayDown = 3.0;  // s
+
 physics::JointSolver JointSolverFor(RisePhase phase, const BodyReading& reading) {
   return phase == RisePhase::kSettle && reading.maxBodySpeed > kLandingSpeed ? physics::JointSolver::kDirectTree
                                                                             : physics::JointSolver::kSequentialImpulse;
@@ -120,6 +129,38 @@ GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& setting
   ServoTargets targets;
   std::vector<float> appliedScale(jointCount, -1.0f);
   std::vector<physics::ContactInfo> scratch;
+  // The targets to the servos, and the joint solver for the phase.
+  auto drive = [&] {
+    for (int j = 1; j < jointCount; ++j) {
+      if (!biped.JointOf(j).IsValid()) continue;
+      biped.SetLocalTarget(j, targets.local[j]);
+      world.SetMotorFeedForward(biped.JointOf(j), targets.feedForward[j]);
+      if (targets.gainScale[j] != appliedScale[j]) {
+        const BoneDef& bone = def.bones[j];
+        biped.SetServoGains(j, bone.servoKp * targets.gainScale[j], bone.servoKd * targets.gainScale[j],
+                            bone.maxTorqueNm);
+        appliedScale[j] = targets.gainScale[j];
+      }
+    }
+    world.Settings().jointSolver = JointSolverFor(controller.Phase(), reading);
+  };
+
+  // The clip's time starts once a laid-down body lies still (see kMaxLayDown).
+  double clipStart = 0.0;
+  if (spec.start.posture != Posture::kCustom && spec.start.dropHeightM == 0.0) {
+    double stillSince = -1.0;
+    for (;;) {
+      ReadBody(biped, world, rig, scratch, reading);
+      if (!RiseController::Still(reading)) stillSince = -1.0;
+      else if (stillSince < 0.0) stillSince = reading.time;
+      const bool rested = stillSince >= 0.0 && reading.time - stillSince >= RiseController::kRestHold;
+      if (rested || reading.time >= kMaxLayDown) break;
+      controller.HoldAsItLies(reading, targets);
+      drive();
+      if (!world.Step().Ok()) break;  // the clip's first step reports it
+    }
+    clipStart = world.Time();
+  }
 
   auto record = [&](double time) {
     const BipedPose pose = biped.Pose();
@@ -130,7 +171,7 @@ GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& setting
   };
 
   for (int step = 0; step <= maxSteps; ++step) {
-    ReadBody(biped, world, rig, scratch, reading);
+    ReadBody(biped, world, rig, scratch, reading, clipStart);
     controller.Update(reading, targets);
     const double time = reading.time;
     record(time);
@@ -143,17 +184,7 @@ GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& setting
     if (settings.keepTrace) result.trace.push_back(controller.LastTrace());
     if (controller.Finished() || controller.GaveUp() || step == maxSteps) break;
 
-    for (int j = 1; j < jointCount; ++j) {
-      if (!biped.JointOf(j).IsValid()) continue;
-      biped.SetLocalTarget(j, targets.local[j]);
-      world.SetMotorFeedForward(biped.JointOf(j), targets.feedForward[j]);
-      if (targets.gainScale[j] != appliedScale[j]) {
-        const BoneDef& bone = def.bones[j];
-        biped.SetServoGains(j, bone.servoKp * targets.gainScale[j], bone.servoKd * targets.gainScale[j],
-                            bone.maxTorqueNm);
-        appliedScale[j] = targets.gainScale[j];
-      }
-    }
+    drive();
     for (const Disturbance& push : spec.disturbances) {
       if (time + 1e-9 >= push.timeS && time < push.timeS + push.durationS) {
         const physics::BodyId body = biped.BodyOf(def.Find(push.body));
@@ -161,7 +192,6 @@ GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& setting
                          world.GetTransform(body).position);
       }
     }
-    world.Settings().jointSolver = JointSolverFor(controller.Phase(), reading);
     const physics::StepStatus status = world.Step();
     if (settings.keepTrace) result.trace.back().jointTorques.assign(jointCount, 0.0f);
     for (int j = 1; j < jointCount; ++j) {
@@ -171,10 +201,10 @@ GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& setting
       if (settings.keepTrace) result.trace.back().jointTorques[j] = torque;
     }
     if (!status.Ok()) {
-      result.health = {false, Describe(status, world.Time(), biped)};
+      result.health = {false, Describe(status, world.Time() - clipStart, biped)};
       break;
     }
-    if (settings.onProgress && step % 240 == 0) settings.onProgress(world.Time(), spec.maxDurationS);
+    if (settings.onProgress && step % 240 == 0) settings.onProgress(world.Time() - clipStart, spec.maxDurationS);
   }
 
   const double end = samples.times.back();

@@ -19,7 +19,6 @@ constexpr int kMaxRetries = 4;
 // Rest: the fallen body has stopped (the paper waits for this before rising).
 constexpr float kRestSpeed = 0.08f;  // m/s
 constexpr float kRestSpin = 0.4f;    // rad/s
-constexpr double kRestHold = 0.25;  // s the body must stay below both
 
 // A clip that ends after the last fall ends on a body at rest by this speed: at
 // kRestSpeed, one creeping down a 20 deg slope at 3 cm/s counted as at rest and
@@ -345,6 +344,16 @@ void RiseController::PlanNext(const BodyReading& reading) {
 // ---------------------------------------------------------------------------
 // The control step
 
+bool RiseController::Still(const BodyReading& reading) {
+  return reading.maxBodySpeed < kRestSpeed && reading.maxAngularSpeed < kRestSpin;
+}
+
+RiseController::WeightShare RiseController::HoldAsItLies(const BodyReading& reading, ServoTargets& out) const {
+  out.local = LocalRotations(def_.skeleton, reading.jointRotations);
+  out.gainScale.assign(def_.skeleton.joints.size(), 0.3f);
+  return FeedForward(reading, reading.com, out.feedForward);
+}
+
 void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
   RISE_ASSERT(static_cast<int>(reading.jointPositions.size()) == def_.skeleton.JointCount());
   const double dt = hasMove_ || phase_ != RisePhase::kSettle ? reading.time - lastTime_ : 0.0;
@@ -357,8 +366,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
 
   if (phase_ == RisePhase::kSettle && !hasMove_) {
     // Hold whatever pose the body fell into until it has come to rest.
-    const float restSpeed = givingUp_ ? kFinalRestSpeed : kRestSpeed;
-    const bool still = reading.maxBodySpeed < restSpeed && reading.maxAngularSpeed < kRestSpin;
+    const bool still = Still(reading) && (!givingUp_ || reading.maxBodySpeed < kFinalRestSpeed);
     if (!still) restSince_ = -1.0;
     else if (restSince_ < 0.0) restSince_ = reading.time;
     // A body already balanced on its feet is not lying: it must not sag while it
@@ -472,10 +480,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
   out.gainScale.assign(def_.skeleton.joints.size(), 1.0f);
   WeightShare shared;
   if (!hasMove_) {
-    shared = FeedForward(reading, reading.com, out.feedForward);
-    // Settling: servos hold the joints where they are, softly.
-    out.local = LocalRotations(def_.skeleton, reading.jointRotations);
-    std::fill(out.gainScale.begin(), out.gainScale.end(), 0.3f);
+    shared = HoldAsItLies(reading, out);
   } else {
     std::optional<BodyPose> solved;
     const PoseGoal goal = GoalAt(move_, progress_, reading, true, &solved);

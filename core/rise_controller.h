@@ -90,6 +90,21 @@ class RiseController {
   // One control step: reads the body, writes the servo targets.
   void Update(const BodyReading& reading, ServoTargets& out);
 
+  // How the body's weight is shared among the planted supports: their centre
+  // of pressure and each one's part (see FeedForward).
+  struct WeightShare {
+    glm::vec3 pressure{0.0f};
+    std::array<float, kLimbCount> share{};
+  };
+  // The settle's servo targets: every joint held softly where it is, so a body
+  // not yet at rest sinks into the pose it lies in. GenerateClip holds a
+  // laid-down start so until it lies still, before the clip's first frame.
+  WeightShare HoldAsItLies(const BodyReading& reading, ServoTargets& out) const;
+  // Under the rest speeds the settle waits for (the paper rises from rest);
+  // the body is at rest once it has stayed so for kRestHold.
+  static bool Still(const BodyReading& reading);
+  static constexpr double kRestHold = 0.25;  // s
+
   RisePhase Phase() const { return phase_; }
   // True once the body has stood still, upright, long enough to end the clip.
   bool Finished() const { return finished_; }
@@ -275,10 +290,6 @@ class RiseController {
   // the CoM (on the feet alone, where it accelerates the CoM toward the
   // balance point). Internal torques only: nothing pushes the body from outside.
   // Returns how it shared the weight, for the trace.
-  struct WeightShare {
-    glm::vec3 pressure{0.0f};
-    std::array<float, kLimbCount> share{};
-  };
   WeightShare FeedForward(const BodyReading& reading, const glm::vec3& comGoal, std::vector<glm::vec3>& out) const;
   // Height of the lowest corner of a hand or foot above the ground, m.
   float Clearance(const BodyReading& reading, Limb limb) const;

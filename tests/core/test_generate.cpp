@@ -243,6 +243,35 @@ TEST_CASE("asking for the debug trace does not change the clip") {
   CHECK(SameClip(a.clip, b.clip));
 }
 
+TEST_CASE("a laid-down start begins at rest: the body lies still from the first frame until it moves to rise") {
+  // Laid on the ground by its lowest corner, a body on its side touched down on
+  // its top foot, dropped 5-7 cm onto its hip and crept 3-4 cm while the settle
+  // held it, all recorded (the top foot's slide was 4 cm of the 5 cm bar before
+  // the roll began). It now comes to rest before the clip's first frame, and the
+  // settle in the clip is only the rest hold.
+  for (const char* posture : {"supine", "prone", "side_left", "side_right"}) {
+    INFO(posture);
+    const std::string text = std::string(R"({"start":{"posture":")") + posture + R"("},"max_duration_s":2})";
+    const rise::GeneratedClip result = GenerateTraced(text.c_str());
+    REQUIRE(result.trace.size() > 1);
+    const rise::TraceSample& first = result.trace.front();
+    double settleEnd = -1.0;
+    float fastest = 0.0f, furthest = 0.0f;  // the CoM's speed (m/s) and distance from where it lay (m)
+    for (const rise::TraceSample& sample : result.trace) {
+      if (sample.phase != rise::RisePhase::kSettle) {
+        settleEnd = sample.time;
+        break;
+      }
+      fastest = std::max(fastest, glm::length(sample.comVelocity));
+      furthest = std::max(furthest, glm::distance(sample.com, first.com));
+    }
+    CHECK(fastest < 0.02f);
+    CHECK(furthest < 0.003f);
+    CHECK(settleEnd >= rise::RiseController::kRestHold);
+    CHECK(settleEnd < rise::RiseController::kRestHold + 0.02);
+  }
+}
+
 TEST_CASE("a prone body settles, places its hands and feet and pushes up onto them") {
   rise::GenerateSettings settings;
   settings.keepTrace = true;
@@ -453,11 +482,12 @@ TEST_CASE("on a slope, a squat short of its soles keeps its hands down until the
   // and let go of the ground at once; the body tipped forward on its face, and
   // its retries ran out of time. Held down until the rise's balance has the CoM
   // over the soles, the hands let go and it stands without a retry. (Start 13
-  // replaced start 37 when a shorter body's lengths began to scale with it:
-  // start 37 then tipped forward 0.25 s into its first rise and did not stand
-  // within 30 s. Start 13 stands; with the hands let go at once it does not.)
+  // replaced start 37 when a shorter body's lengths began to scale with it,
+  // and start 23 replaced 13 when laid-down starts began at rest: 13 then fell
+  // in its crawl and did not stand within 30 s. Starts 23 and 41 stand at the
+  // first try; with the hands let go at once, neither does.)
   for (const char* text :
-       {R"({"character":{"height_m":1.65,"mass_kg":97},"start":{"posture":"prone","heading_deg":121},"seed":14,"max_duration_s":30,"terrain":{"slope_deg":10}})",
+       {R"({"character":{"height_m":1.85,"mass_kg":69},"start":{"posture":"prone","heading_deg":131},"seed":24,"max_duration_s":30,"terrain":{"slope_deg":10}})",
         R"({"character":{"height_m":1.85,"mass_kg":97},"start":{"posture":"prone","heading_deg":77},"seed":42,"max_duration_s":30,"terrain":{"slope_deg":10}})"}) {
     CheckStandsAtFirstTry(text);
   }
