@@ -35,13 +35,29 @@ RiseController::LimbMove RiseController::HoldLimb(const BodyReading& r, Limb lim
   return hold;
 }
 
+RiseController::LimbMove RiseController::SwingToAngles(const BodyReading& r, Limb limb,
+                                                       const std::array<float, 5>& anglesDeg) const {
+  const int i = static_cast<int>(limb);
+  const std::vector<glm::quat> local = LocalRotations(def_.skeleton, r.jointRotations);
+  float root[3] = {}, hinge[3] = {};
+  def_.JointAngles(rig_.upper[i], local[rig_.upper[i]], root);
+  def_.JointAngles(rig_.lower[i], local[rig_.lower[i]], hinge);
+  LimbMove m;
+  m.mode = LimbMode::kJoint;
+  m.from = glm::radians(glm::vec3(root[0], root[1], hinge[0]));
+  m.to = glm::radians(glm::vec3(anglesDeg[0], anglesDeg[1], anglesDeg[2]));
+  m.fromRotation = local[rig_.end[i]];
+  m.toRotation = def_.JointRotation(rig_.end[i], &anglesDeg[3]);
+  return m;
+}
+
 RiseController::LimbMove RiseController::SwingInJoints(const BodyReading& r, Limb limb, const BodyPose& pose) const {
   const int i = static_cast<int>(limb);
   const std::vector<glm::quat> local = LocalRotations(def_.skeleton, pose.worldRotations);
   float root[3] = {}, hinge[3] = {};
   def_.JointAngles(rig_.upper[i], local[rig_.upper[i]], root);
   def_.JointAngles(rig_.lower[i], local[rig_.lower[i]], hinge);
-  LimbMove m = RollLimb(r, limb, {root[0], root[1], hinge[0], 0, 0});
+  LimbMove m = SwingToAngles(r, limb, {root[0], root[1], hinge[0], 0, 0});
   m.toRotation = local[rig_.end[i]];
   return m;
 }

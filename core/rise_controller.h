@@ -162,9 +162,6 @@ class RiseController {
   // its front about its own long axis, rolling toward rollSign_'s side: 0 on the
   // back, pi/2 on that side, pi on the front; in [-pi/2, 3 pi/2).
   float RollAngle(const glm::quat& segment) const;
-  // A limb of a roll pose, set by its joints' angles in degrees (the root's two,
-  // the hinge's, the end's two), so it swings along the joints' own arcs.
-  LimbMove RollLimb(const BodyReading& reading, Limb limb, const std::array<float, 5>& anglesDeg) const;
   // The measured trunk turned on by `angle` about its long axis toward the roll
   // side, pivoting on the edge it rolls over, the chest turned `twist` further.
   TrunkPose RolledTrunk(const BodyReading& reading, float angle, float twist) const;
@@ -217,6 +214,9 @@ class RiseController {
   // Geometry of the measured body.
   TrunkPose MeasuredTrunk(const BodyReading& reading) const;
   LimbMove HoldLimb(const BodyReading& reading, Limb limb, bool planted) const;
+  // A limb swung to a pose set by its joints' angles in degrees (the root's
+  // two, the hinge's, the end's two), along the joints' own arcs.
+  LimbMove SwingToAngles(const BodyReading& reading, Limb limb, const std::array<float, 5>& anglesDeg) const;
   // A limb swung in its joints from where it is to its angles in `pose`, its end
   // turned to the pose's: a long swing whose straight path would pass the root's
   // two angles into another branch of their solution.

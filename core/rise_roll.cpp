@@ -73,22 +73,6 @@ float RiseController::RollAngle(const glm::quat& segment) const {
   return angle < -0.5f * kPi ? angle + 2.0f * kPi : angle;
 }
 
-RiseController::LimbMove RiseController::RollLimb(const BodyReading& r, Limb limb,
-                                                  const std::array<float, 5>& anglesDeg) const {
-  const int i = static_cast<int>(limb);
-  const std::vector<glm::quat> local = LocalRotations(def_.skeleton, r.jointRotations);
-  float root[3] = {}, hinge[3] = {};
-  def_.JointAngles(rig_.upper[i], local[rig_.upper[i]], root);
-  def_.JointAngles(rig_.lower[i], local[rig_.lower[i]], hinge);
-  LimbMove m;
-  m.mode = LimbMode::kJoint;
-  m.from = glm::radians(glm::vec3(root[0], root[1], hinge[0]));
-  m.to = glm::radians(glm::vec3(anglesDeg[0], anglesDeg[1], anglesDeg[2]));
-  m.fromRotation = local[rig_.end[i]];
-  m.toRotation = def_.JointRotation(rig_.end[i], &anglesDeg[3]);
-  return m;
-}
-
 RiseController::TrunkPose RiseController::RolledTrunk(const BodyReading& r, float angle, float twist) const {
   const TrunkPose measured = MeasuredTrunk(r);
   const glm::quat pelvis = measured.pelvisRotation;
@@ -186,7 +170,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   // (stress seed 5600). The tuck brings it up first, with the trunk at rest
   // (after a tuck or a push off it is up or on its way).
   const bool armUp = rollStage_ == RollStage::kTuck || rollStage_ == RollStage::kPush ||
-                     RollLimb(r, nearArm, kNearArmOverhead).from.x > kOverheadArm;
+                     SwingToAngles(r, nearArm, kNearArmOverhead).from.x > kOverheadArm;
   if (pelvisRoll < kPushedRoll) stage = firstMove || !farFootSet || !armUp ? RollStage::kTuck : RollStage::kPush;
   const bool pushedOff = pelvisRoll > kLiftOffRoll && !r.touching[far];
   if (stage == RollStage::kPush && pushedOff) stage = RollStage::kOver;
@@ -198,7 +182,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   move.from = MeasuredTrunk(r);
   auto set = [&](Limb limb, const LimbMove& m) { move.limbs[static_cast<int>(limb)] = m; };
   auto swing = [&](Limb limb, const std::array<float, 5>& anglesDeg) {
-    LimbMove m = RollLimb(r, limb, anglesDeg);
+    LimbMove m = SwingToAngles(r, limb, anglesDeg);
     m.lift = static_cast<float>(spec_.style.stepHeightM);
     return m;
   };
@@ -207,8 +191,8 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   // side, a log roll, while the arm-out move dragged an overhead hand 50-75 cm;
   // since that move ends with the arm straight, alongside stood fewer:
   // bench/prone_variants-style harness, 48 supine at 30 s, 36 against 45.)
-  set(nearArm, RollLimb(r, nearArm, kNearArmOverhead));
-  set(nearLeg, RollLimb(r, nearLeg, kNearLegAlong));
+  set(nearArm, SwingToAngles(r, nearArm, kNearArmOverhead));
+  set(nearLeg, SwingToAngles(r, nearLeg, kNearLegAlong));
   // The far arm's angles in each move, the chest's lead, the turn at which the
   // lie follows and the over's pace were set by a sweep over bench/prone_variants'
   // 24 supine and 24 side_left starts, scored by how far hands and feet slid
@@ -235,7 +219,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       // way, so the heel sweeps well below the ankle: twice a step's lift.
       foot.lift = 2.0f * static_cast<float>(spec_.style.stepHeightM);
       set(farLeg, foot);
-      set(farArm, RollLimb(r, farArm, {35, 8, 10, 0, 0}));
+      set(farArm, SwingToAngles(r, farArm, {35, 8, 10, 0, 0}));
       break;
     }
     case RollStage::kPush:
@@ -253,7 +237,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
         set(farLeg, foot);
       }
       // The far arm, part way up since the tuck, swings on over the head and out.
-      set(farArm, RollLimb(r, farArm, {150, 50, 10, 0, 0}));
+      set(farArm, SwingToAngles(r, farArm, {150, 50, 10, 0, 0}));
       hadPushOff_ = true;
       break;
     case RollStage::kOver: {
@@ -303,8 +287,8 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       move.to = RolledTrunk(r, 0.0f, 0.0f);
       set(farArm, swing(farArm, {0, 10, 10, 0, 0}));
       set(nearArm, swing(nearArm, {170, 35, 10, 0, 0}));
-      set(nearLeg, RollLimb(r, nearLeg, {0, 0, 90, -50, 0}));
-      set(farLeg, RollLimb(r, farLeg, {0, 0, 90, -50, 0}));
+      set(nearLeg, SwingToAngles(r, nearLeg, {0, 0, 90, -50, 0}));
+      set(farLeg, SwingToAngles(r, farLeg, {0, 0, 90, -50, 0}));
       break;
   }
   return move;
@@ -336,7 +320,7 @@ std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading
     move.limbs[i] = HoldLimb(r, limb, false);
     if (!IsArm(limb)) continue;
     const std::array<float, 5> outToSide{170, 90, 0, 0, 0}, turnedThere{-55, 90, 0, 0, 0};
-    const LimbMove out = RollLimb(r, limb, turn ? turnedThere : outToSide);
+    const LimbMove out = SwingToAngles(r, limb, turn ? turnedThere : outToSide);
     const bool needed = raisedOnly ? !r.touching[i]
                         : turn     ? out.from.y > kArmOutAbduction && out.from.x > 0.0f
                                    : out.from.x > kOverheadArm;

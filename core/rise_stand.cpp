@@ -17,6 +17,13 @@ namespace {
 // the slip bar so).
 constexpr float kHandLiftOff = 0.05f;  // m
 
+// How high a hand swung to the side (ArmToSide) rises early in the swing and
+// holds, above its arc: along the joints' arcs from the ground the hand's first
+// stretch runs along the ground (without a lift, 48 of bench/prone_variants'
+// 144 prone starts slid a hand 16-22 cm; with 0.05 / 0.08 m 8 / 9, with 0.12,
+// 0.15 and 0.2 m none).
+constexpr float kArmToSideLift = 0.15f;  // m
+
 }  // namespace
 
 std::array<float, 2> RiseController::LegPitches(const BodyReading& r, int leg) const {
@@ -33,16 +40,27 @@ glm::vec3 RiseController::RisingPelvis(const Move& move, float e, const BodyRead
   // together, standing on the feet where they are. A straight line for the
   // pelvis instead would carry the knees forward of what the ankles allow on
   // the way up out of a deep squat.
-  glm::vec3 pelvis(0.0f);
+  glm::vec3 pelvis(0.0f), ankles(0.0f);
   for (int leg = 2; leg < 4; ++leg) {
     const float shinLength = glm::length(def_.skeleton.joints[rig_.end[leg]].restOffset);
     const float thighLength = glm::length(def_.skeleton.joints[rig_.lower[leg]].restOffset);
     auto along = [&](float pitch) { return kUp * std::cos(pitch) + heading_ * std::sin(pitch); };
     const std::array<float, 2>& from = move.legPitches[leg - 2];
     const glm::vec3 ankle = r.jointPositions[rig_.end[leg]];
+    ankles += 0.5f * ankle;
     pelvis += 0.5f * (ankle + shinLength * along(from[0] * (1.0f - e)) + thighLength * along(from[1] * (1.0f - e)));
   }
-  return pelvis;
+  // Standing at ease the legs lean forward at the ankles, the pelvis over the
+  // balance point: the upright body's CoM is there with the trunk upright.
+  // Straight up over the ankles it stayed behind, and the hip strategy held the
+  // trunk leaning forward through the stand (pelvis to head 9.4-9.6 deg from
+  // vertical at the end of 143 of bench/prone_variants' 144 prone starts, 16.7
+  // deg in one, over the clip's 15 deg bar; now at most 0.2 deg in all 144). The
+  // rise brings the pelvis there as the legs straighten; the stand keeps it
+  // there (starting each stand move from over the ankles, the body bowed 8 deg
+  // and back once a second).
+  const float forward = move.phase == RisePhase::kStand ? 1.0f : e;
+  return pelvis + forward * Horizontal(BalancePoint(r) - ankles);
 }
 
 RiseController::Move RiseController::RiseMove(const BodyReading& r) const {
@@ -64,14 +82,14 @@ RiseController::Move RiseController::RiseMove(const BodyReading& r) const {
 }
 
 RiseController::LimbMove RiseController::ArmToSide(const BodyReading& r, Limb limb, float delay) const {
-  const int hand = static_cast<int>(limb);
-  LimbMove m;
-  const glm::quat chest = r.jointRotations[rig_.chest];
-  m.mode = LimbMode::kBody;
-  m.from = glm::inverse(chest) * (r.jointPositions[rig_.end[hand]] - r.jointPositions[rig_.upper[hand]]);
-  m.fromRotation = glm::inverse(chest) * r.jointRotations[rig_.end[hand]];
-  m.to = def_.skeleton.BindPositions()[rig_.end[hand]] - def_.skeleton.BindPositions()[rig_.upper[hand]];
-  m.toRotation = glm::quat(1, 0, 0, 0);
+  // Swung down in the joints' own angles to hang at the side (the bind pose).
+  // Taken along a straight line in the chest's frame, an arm that started
+  // overhead of a chest folded down over the knees passed through the
+  // shoulder: half way the IK's arm flipped from in front to behind, and the
+  // servos swung it the other way round, up over the head at 9 m/s (the prone
+  // sample's rise).
+  LimbMove m = SwingToAngles(r, limb, {0, 0, 0, 0, 0});
+  m.lift = kArmToSideLift;
   m.delay = delay;
   m.span = std::min(0.6f, 1.0f - delay);
   return m;
@@ -128,7 +146,11 @@ RiseController::Move RiseController::PlanStand(const BodyReading& r) {
   move.name = "stand";
   move.phase = RisePhase::kStand;
   move.duration = 1.0;
-  for (int i = 0; i < 2; ++i) move.limbs[i].from = move.limbs[i].to, move.limbs[i].fromRotation = move.limbs[i].toRotation;
+  // The arms hang where the rise swung them, held there (no swing, so no lift).
+  for (int i = 0; i < 2; ++i) {
+    LimbMove& arm = move.limbs[i];
+    arm.from = arm.to, arm.fromRotation = arm.toRotation, arm.lift = 0.0f;
+  }
   if (standTime_ < 0.0) standTime_ = r.time;
   return move;
 }
