@@ -60,6 +60,14 @@ constexpr std::array<float, 5> kNearLegAloft{-20, -20, 30, -20, 0};
 // The near leg otherwise: straight along the pelvis, the foot relaxed.
 constexpr std::array<float, 5> kNearLegAlong{5, 0, 4, -20, 0};
 
+// The near leg in the "over" from a side, where it lies under the body: straight along the pelvis
+// as kNearLegAlong, the foot square to the shin. Relaxed (pointed 20 deg), the foot lying on its
+// outer edge turned in place as the leg rolled with the pelvis and slid 5-11 cm (bench/prone_variants
+// 48 side_left / side_right: pass every bar 28 / 25 that way, 41 / 38 square, 36-40 / 37-38 with
+// the foot anywhere from 10 deg pointed to 15 deg raised, 0 / 0 pointed 40 deg; at the tired
+// style's pace 5 / 3 against 25 / 29).
+constexpr std::array<float, 5> kNearLegUnder{5, 0, 4, 0, 0};
+
 }  // namespace
 
 float RiseController::RollAngle(const glm::quat& segment) const {
@@ -264,8 +272,9 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       // From a side the near leg lies under the body from the start: it
       // straightens under the turning pelvis with a lift (held to its angles
       // alone its ankle's goal went 5-8 cm into the ground, and the foot was
-      // pushed along it). After a push off it is in the air and stays there.
-      set(nearLeg, swing(nearLeg, hadPushOff_ ? kNearLegAloft : kNearLegAlong));
+      // pushed along it), the foot square to the shin (kNearLegUnder). After a
+      // push off it is in the air and stays there.
+      set(nearLeg, swing(nearLeg, hadPushOff_ ? kNearLegAloft : kNearLegUnder));
       break;
     }
     case RollStage::kLie:
