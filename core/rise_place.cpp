@@ -17,7 +17,7 @@ constexpr float kHandHover = 0.06f;  // m
 constexpr float kHandPress = 0.005f;  // m
 
 // A foot whose ankle is farther than this from its spot swings there in its joints.
-constexpr float kSwingToAnglesFoot = 0.8f;  // m
+constexpr float kJointSwingFoot = 0.8f;  // m
 
 }  // namespace
 
@@ -98,7 +98,7 @@ RiseController::Move RiseController::PlanPlace(const BodyReading& r) {
     // servos snapped the leg round, the foot at 10.7 m/s (stress seed 5132,
     // its ankle 1.27 m from its spot). Nine places in ten move a foot less
     // than 0.6 m (stress seeds 5001-5300), so only the long ones swing so.
-    if (glm::length(m.to - m.from) > kSwingToAnglesFoot) {
+    if (glm::length(m.to - m.from) > kJointSwingFoot) {
       PoseGoal reach = trunk;
       reach.limbs[i].target = m.to;
       reach.limbs[i].endRotation = m.toRotation;

@@ -408,7 +408,8 @@ TEST_CASE("a clip that stands ends on a still, neutral stand an engine can blend
   for (int f = last - window; f < last; ++f) {
     const std::vector<glm::vec3> at = clip.WorldPositions(f);
     for (size_t j = 0; j < end.size(); ++j) {
-      if (glm::length(at[j] - end[j]) > moved) moved = glm::length(at[j] - end[j]), movedJoint = clip.skeleton.joints[j].name;
+      const float distance = glm::length(at[j] - end[j]);
+      if (distance > moved) moved = distance, movedJoint = clip.skeleton.joints[j].name;
     }
   }
   INFO("most moved joint " << movedJoint);
