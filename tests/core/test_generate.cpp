@@ -1178,10 +1178,6 @@ TEST_CASE("roll: a body flat on its back on a slope rolls downhill, so the roll 
   }
 }
 
-// Known to fail: the lifted swings keep most hands and feet off the ground
-// while they move, but the bottom leg, which the body rolls over, the arm
-// overhead and the top hand once it has come down still slide 10-30 cm while
-// the body turns on over them. Drop may_fail once they do not.
 TEST_CASE("roll: the arm left overhead comes out round the side without touching the ground") {
   // Swung in its two shoulder angles straight to the side it passed through
   // the directions in front of the chest and dragged the hand 40-48 cm along
