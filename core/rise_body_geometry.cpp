@@ -19,6 +19,14 @@ glm::quat FromAxes(const glm::vec3& x, const glm::vec3& y) {
   return glm::normalize(glm::quat_cast(glm::mat3(x, y, glm::cross(x, y))));
 }
 
+// A limb's root angles and hinge angle (degrees) in the given local rotations.
+glm::vec3 LimbAnglesDeg(const BipedDef& def, const BodyRig& rig, const std::vector<glm::quat>& local, int limb) {
+  float root[3] = {}, hinge[3] = {};
+  def.JointAngles(rig.upper[limb], local[rig.upper[limb]], root);
+  def.JointAngles(rig.lower[limb], local[rig.lower[limb]], hinge);
+  return glm::vec3(root[0], root[1], hinge[0]);
+}
+
 }  // namespace
 
 RiseController::TrunkPose RiseController::MeasuredTrunk(const BodyReading& r) const {
@@ -39,12 +47,9 @@ RiseController::LimbMove RiseController::SwingToAngles(const BodyReading& r, Lim
                                                        const std::array<float, 5>& anglesDeg) const {
   const int i = static_cast<int>(limb);
   const std::vector<glm::quat> local = LocalRotations(def_.skeleton, r.jointRotations);
-  float root[3] = {}, hinge[3] = {};
-  def_.JointAngles(rig_.upper[i], local[rig_.upper[i]], root);
-  def_.JointAngles(rig_.lower[i], local[rig_.lower[i]], hinge);
   LimbMove m;
   m.mode = LimbMode::kJoint;
-  m.from = glm::radians(glm::vec3(root[0], root[1], hinge[0]));
+  m.from = glm::radians(LimbAnglesDeg(def_, rig_, local, i));
   m.to = glm::radians(glm::vec3(anglesDeg[0], anglesDeg[1], anglesDeg[2]));
   m.fromRotation = local[rig_.end[i]];
   m.toRotation = def_.JointRotation(rig_.end[i], &anglesDeg[3]);
@@ -54,10 +59,8 @@ RiseController::LimbMove RiseController::SwingToAngles(const BodyReading& r, Lim
 RiseController::LimbMove RiseController::SwingInJoints(const BodyReading& r, Limb limb, const BodyPose& pose) const {
   const int i = static_cast<int>(limb);
   const std::vector<glm::quat> local = LocalRotations(def_.skeleton, pose.worldRotations);
-  float root[3] = {}, hinge[3] = {};
-  def_.JointAngles(rig_.upper[i], local[rig_.upper[i]], root);
-  def_.JointAngles(rig_.lower[i], local[rig_.lower[i]], hinge);
-  LimbMove m = SwingToAngles(r, limb, {root[0], root[1], hinge[0], 0, 0});
+  const glm::vec3 angles = LimbAnglesDeg(def_, rig_, local, i);
+  LimbMove m = SwingToAngles(r, limb, {angles.x, angles.y, angles.z, 0, 0});
   m.toRotation = local[rig_.end[i]];
   return m;
 }

@@ -149,7 +149,9 @@ RiseController::Move RiseController::PlanStand(const BodyReading& r) {
   // The arms hang where the rise swung them, held there (no swing, so no lift).
   for (int i = 0; i < 2; ++i) {
     LimbMove& arm = move.limbs[i];
-    arm.from = arm.to, arm.fromRotation = arm.toRotation, arm.lift = 0.0f;
+    arm.from = arm.to;
+    arm.fromRotation = arm.toRotation;
+    arm.lift = 0.0f;
   }
   if (standTime_ < 0.0) standTime_ = r.time;
   return move;
