@@ -68,6 +68,16 @@ constexpr std::array<float, 5> kNearLegAlong{5, 0, 4, -20, 0};
 // style's pace 5 / 3 against 25 / 29).
 constexpr std::array<float, 5> kNearLegUnder{5, 0, 4, 0, 0};
 
+// The near leg's swing to kNearLegAlong, as the arc its ankle sweeps at full reach, past which the
+// leg starts bent (a custom pose, say) and its foot is lifted kBentLegLift on the way. Straightened
+// along the ground, samples/custom.json's near leg (hip 45, knee 80 deg) slid its foot 17 cm in the
+// tuck. A leg lying straight swings a few centimetres and is not lifted.
+constexpr float kBentLegSwing = 0.25f;  // m
+constexpr float kBentLegLift = 0.08f;   // m
+
+// Both legs in the lie: hips straight, knees bent 90 deg with the feet up (see the lie).
+constexpr std::array<float, 5> kLieLeg{0, 0, 90, -50, 0};
+
 // How high the top leg's foot is lifted in the "over" when it is not pushing (from a side, say),
 // as a fraction of the leg's reach. Lying on its side, the leg's weight pulls straight against the
 // hip's abduction, and no feed-forward holds a limb up while the body lies, so the servo lifts the
@@ -192,6 +202,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   if (pelvisRoll < kPushedRoll) stage = firstMove || !farFootSet || !armUp ? RollStage::kTuck : RollStage::kPush;
   const bool pushedOff = pelvisRoll > kLiftOffRoll && !r.touching[far];
   if (stage == RollStage::kPush && pushedOff) stage = RollStage::kOver;
+  const RollStage previous = rollStage_;
   rollStage_ = stage;
 
   heading_ = HeadingForward(r);
@@ -210,7 +221,9 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   // since that move ends with the arm straight, alongside stood fewer:
   // bench/prone_variants-style harness, 48 supine at 30 s, 36 against 45.)
   set(nearArm, SwingToAngles(r, nearArm, kNearArmOverhead));
-  set(nearLeg, SwingToAngles(r, nearLeg, kNearLegAlong));
+  LimbMove nearAlong = SwingToAngles(r, nearLeg, kNearLegAlong);
+  if (glm::length(nearAlong.to - nearAlong.from) * legReach_ > kBentLegSwing) nearAlong.lift = kBentLegLift;
+  set(nearLeg, nearAlong);
   // The far arm's angles in each move, the chest's lead, the turn at which the
   // lie follows and the over's pace were set by a sweep over bench/prone_variants'
   // 24 supine and 24 side_left starts, scored by how far hands and feet slid
@@ -290,7 +303,12 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       // alone its ankle's goal went 5-8 cm into the ground, and the foot was
       // pushed along it), the foot square to the shin (kNearLegUnder). After a
       // push off it is in the air and stays there.
-      set(nearLeg, swing(nearLeg, hadPushOff_ ? kNearLegAloft : kNearLegUnder));
+      // An over again after a lie (the pelvis did not follow the chest onto the
+      // front) leaves the near leg as the lie laid it, thigh down and shin up:
+      // swung back to kNearLegAloft under a body already on its front, its foot
+      // came down and the turning pelvis dragged it 26 cm (samples/custom.json).
+      set(nearLeg, previous == RollStage::kLie ? SwingToAngles(r, nearLeg, kLieLeg)
+                                               : swing(nearLeg, hadPushOff_ ? kNearLegAloft : kNearLegUnder));
       break;
     }
     case RollStage::kLie:
@@ -312,8 +330,8 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       move.to = RolledTrunk(r, 0.0f, 0.0f);
       set(farArm, swing(farArm, {0, 10, 10, 0, 0}));
       set(nearArm, swing(nearArm, {170, 35, 10, 0, 0}));
-      set(nearLeg, SwingToAngles(r, nearLeg, {0, 0, 90, -50, 0}));
-      set(farLeg, SwingToAngles(r, farLeg, {0, 0, 90, -50, 0}));
+      set(nearLeg, SwingToAngles(r, nearLeg, kLieLeg));
+      set(farLeg, SwingToAngles(r, farLeg, kLieLeg));
       break;
   }
   return move;

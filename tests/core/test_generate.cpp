@@ -1137,11 +1137,15 @@ TEST_CASE("roll: an arm left at the side is brought overhead in a tuck before th
   // deg in its joints to overhead while the trunk turned, and the hand
   // whipped round at 12.3 m/s, over the stress runner's 10 m/s bound (51 s).
   // Now a push off follows a tuck or a push off, or an arm already overhead,
-  // and never the arm out or arm turn that leaves the arm at the side. (The
-  // tuck rule turns this start's first roll differently, so it no longer
-  // falls into that state at 50 s; no box goes faster than 9 m/s on the way.)
+  // and never the arm out or arm turn that leaves the arm at the side.
+  // Seed 5600's rolls have since gone otherwise; stress seed 5147 (1.88 m,
+  // 127 kg, 8.2 deg) falls into the state at 37 s, back from a place with its
+  // near arm out from an arm out. In a scratch build without the rule its push
+  // off came straight after that arm out, the body did not get over in 7 s,
+  // fell back, and had not stood by 62 s; with the rule a tuck comes first and
+  // it stands at 56.9 s.
   const rise::GeneratedClip result = GenerateTraced(
-      R"({"character":{"height_m":1.581,"mass_kg":116.433},"fps":240,"seed":5600,"max_duration_s":53,"start":{"drop_height_m":0.531,"joints_deg":{"abdomen":[5.45,15.459,-3.324],"chest":[25.68,-2.245,34.639],"foot_l":[-21.061,-2.632],"foot_r":[-3.724,7.453],"forearm_l":[4.434],"forearm_r":[149.349],"hand_l":[24.813,12.377],"hand_r":[37.5,1.94],"head":[-21.712,25.077,-38.3],"shin_l":[102.297],"shin_r":[24.489],"thigh_l":[-1.45,-8.612],"thigh_r":[16.313,33.409],"upper_arm_l":[-24.259,23.12],"upper_arm_r":[15.673,27.761]},"posture":"custom","root_euler_deg":[-46.841,153.804,-79.424]},"style":{"look_around":0.64,"speed":2.732,"stance_width_m":0.254,"step_height_m":0.206,"sway":0.054,"tiredness":0.355},"terrain":{"friction":1.143,"slope_deg":9.637}})");
+      R"({"character":{"height_m":1.875,"mass_kg":126.786},"fps":240.0,"seed":5147,"max_duration_s":62,"start":{"drop_height_m":0.801,"joints_deg":{"abdomen":[24.961,1.781,9.779],"chest":[18.66,17.526,-30.654],"foot_l":[17.056,30.897],"foot_r":[-36.479,26.727],"forearm_l":[16.126],"forearm_r":[99.996],"hand_l":[41.818,-6.602],"hand_r":[40.115,-16.248],"head":[-5.497,-32.927,43.16],"shin_l":[55.41],"shin_r":[36.024],"thigh_l":[22.554,35.5],"thigh_r":[118.909,38.134],"upper_arm_l":[78.033,12.992],"upper_arm_r":[30.283,82.003]},"posture":"custom","root_euler_deg":[28.838,120.602,-131.107]},"style":{"look_around":0.275,"speed":2.487,"stance_width_m":0.347,"step_height_m":0.132,"sway":0.698,"tiredness":0.667},"terrain":{"friction":1.141,"slope_deg":8.211}})");
   REQUIRE(result.health.ok);
   REQUIRE_FALSE(result.trace.empty());
   int pushOffs = 0;
@@ -1155,7 +1159,8 @@ TEST_CASE("roll: an arm left at the side is brought overhead in a tuck before th
   }
   INFO(result.outcome);
   CHECK(pushOffs >= 2);
-  CHECK(rise::MeasureFastestBox(result.clip).speed < 9.0);
+  CHECK(result.stood);
+  CHECK(rise::MeasureFastestBox(result.clip).speed < 10.0);
 }
 
 TEST_CASE("roll: a body flat on its back on a slope rolls downhill, so the roll gets over") {
