@@ -6,6 +6,7 @@
 #include "export/clip_resample.h"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -257,6 +258,13 @@ std::string TraceToJsonLines(const std::vector<TraceSample>& trace, const Skelet
     line["heading"] = vec(sample.heading);
     line["tracking_error"] = sample.trackingError;
     line["feet_distance"] = sample.feetDistance;
+    if (sample.rollSide != 0.0f) {
+      line["roll"] = {{"side", sample.rollSide > 0.0f ? "left" : "right"},
+                      {"pelvis_deg", glm::degrees(sample.pelvisRoll)},
+                      {"chest_deg", glm::degrees(sample.chestRoll)}};
+    } else {
+      line["roll"] = nullptr;
+    }
     nlohmann::json support = nlohmann::json::array();
     for (const glm::vec2& p : sample.support.hull) support.push_back({p.x, p.y});
     line["support"] = support;

@@ -516,6 +516,11 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
   trace_.pressure = shared.pressure;
   trace_.load = shared.share;
   trace_.heading = heading_;
+  trace_.rollSide = rollSign_;
+  if (rollSign_ != 0.0f) {
+    trace_.pelvisRoll = RollAngle(reading.jointRotations[rig_.pelvis]);
+    trace_.chestRoll = RollAngle(reading.jointRotations[rig_.chest]);
+  }
   trace_.touching = reading.touching;
   trace_.planted = planted_;
   for (int i = 0; i < kLimbCount; ++i) {

@@ -75,6 +75,11 @@ struct TraceSample {
   std::array<bool, kLimbCount> planted{};
   std::array<float, kLimbCount> load{};  // share of the weight the feed-forward puts on each hand/foot
   float trackingError = 0.0f;
+  // The roll (Phase 0): the side the body rolls over (+1 its left, -1 its right;
+  // 0 before one is chosen) and how far pelvis and chest have turned toward it
+  // from lying on the back, rad (0 on the back, pi/2 on that side, pi on the front).
+  float rollSide = 0.0f;
+  float pelvisRoll = 0.0f, chestRoll = 0.0f;
   // Per skeleton joint: the magnitude of the motor torque over the step that
   // follows this sample, N*m (0 where no motor: the root and the end joints).
   // Filled by GenerateClip.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include "core/clip_check.h"
@@ -1311,4 +1312,48 @@ TEST_CASE("the trace shows the CoM's velocity, where the weight is aimed, each s
   CHECK(first["torques"].size() == 15u);
   CHECK(first["torques"]["shin_l"].get<float>() == doctest::Approx(trace.front().jointTorques[def.Find("shin_l")]));
 }
+}
+
+TEST_CASE("the trace shows the roll: its side and how far pelvis and chest have turned from the back") {
+  // A supine start turns over onto its front and places its hands in its first 8 s.
+  const rise::GeneratedClip result = Generate(
+      R"({"character":{"height_m":1.60,"mass_kg":55},"start":{"posture":"supine","heading_deg":0},"seed":1,"max_duration_s":8})",
+      true);
+  const std::vector<rise::TraceSample>& trace = result.trace;
+  REQUIRE(!trace.empty());
+  // No side while the body settles; once chosen, the side holds for the whole roll.
+  CHECK(trace.front().rollSide == 0.0f);
+  size_t chosen = 0;
+  while (chosen < trace.size() && trace[chosen].rollSide == 0.0f) ++chosen;
+  REQUIRE(chosen < trace.size());
+  CHECK(trace[chosen].phase == rise::RisePhase::kRoll);
+  float peak = -10.0f;
+  size_t placed = trace.size();
+  for (size_t k = chosen; k < trace.size(); ++k) {
+    CHECK(trace[k].rollSide == trace[chosen].rollSide);
+    if (trace[k].phase == rise::RisePhase::kPlace && placed == trace.size()) placed = k;
+    if (placed == trace.size()) peak = std::max(peak, trace[k].pelvisRoll);
+  }
+  // From flat on the back (0 deg) to the front (past 135 deg) before the hands are placed.
+  CHECK(std::fabs(glm::degrees(trace[chosen].pelvisRoll)) < 10.0f);
+  CHECK(std::fabs(glm::degrees(trace[chosen].chestRoll)) < 10.0f);
+  REQUIRE(placed < trace.size());
+  CHECK(glm::degrees(trace[placed].pelvisRoll) > 135.0f);
+  CHECK(glm::degrees(trace[placed].chestRoll) > 135.0f);
+  CHECK(glm::degrees(peak) < 200.0f);
+
+  // In the JSON lines: null before the side is chosen, then the side and both angles in degrees.
+  const std::string lines = rise::TraceToJsonLines(trace, result.clip.skeleton);
+  std::vector<nlohmann::json> parsed;
+  for (size_t at = 0; at < lines.size();) {
+    const size_t end = lines.find('\n', at);
+    parsed.push_back(nlohmann::json::parse(lines.substr(at, end - at)));
+    at = end + 1;
+  }
+  REQUIRE(parsed.size() == trace.size());
+  CHECK(parsed.front()["roll"].is_null());
+  const nlohmann::json& roll = parsed[placed]["roll"];
+  CHECK(roll["side"] == (trace[chosen].rollSide > 0.0f ? "left" : "right"));
+  CHECK(roll["pelvis_deg"].get<float>() == doctest::Approx(glm::degrees(trace[placed].pelvisRoll)));
+  CHECK(roll["chest_deg"].get<float>() == doctest::Approx(glm::degrees(trace[placed].chestRoll)));
 }
