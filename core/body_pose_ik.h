@@ -82,9 +82,16 @@ struct BodyPose {
 // Solves the pose; a pure function of its inputs.
 BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseGoal& goal);
 
+// How SolveTwoAxes brings an angle beyond its joint's range into it.
+enum class RangeClamp {
+  kBySign,   // the limit on the angle's side in (-pi, pi]: across the half turn it jumps to the other
+  kNearest,  // the limit nearer round the circle, the one that turns v closer to t
+};
+
 // The angles (a, b) with R(axis0, a) R(axis1, b) v closest to t (unit vectors;
 // axis0 perpendicular to axis1), each clamped to its range.
-glm::vec2 SolveTwoAxes(const BodyRig::Axis& axis0, const BodyRig::Axis& axis1, const glm::vec3& v, const glm::vec3& t);
+glm::vec2 SolveTwoAxes(const BodyRig::Axis& axis0, const BodyRig::Axis& axis1, const glm::vec3& v, const glm::vec3& t,
+                       RangeClamp clamp = RangeClamp::kBySign);
 
 // World position of the shoulder or hip joint of `limb` for the given trunk.
 glm::vec3 LimbRoot(const Skeleton& skeleton, const BodyRig& rig, const PoseGoal& goal, Limb limb);

@@ -69,6 +69,32 @@ TEST_CASE("two-axis turns reach any direction their ranges allow") {
   CHECK(clamped.y == doctest::Approx(glm::radians(-30.0f)));
 }
 
+TEST_CASE("two-axis turns out of range: by sign the nearer limit of the angle's value, nearest the nearer round the circle") {
+  // An ankle (pitch -50..30 deg, roll -20..35 deg) asked to turn its sole 175 deg about the pitch axis.
+  const rise::BodyRig::Axis pitch{{1, 0, 0}, glm::radians(-50.0f), glm::radians(30.0f)};
+  const rise::BodyRig::Axis roll{{0, 0, 1}, glm::radians(-20.0f), glm::radians(35.0f)};
+  const glm::vec3 up(0, 1, 0);
+  auto turned = [&](const glm::vec2& angles) {
+    return glm::angleAxis(angles.x, pitch.axis) * glm::angleAxis(angles.y, roll.axis) * up;
+  };
+  // Across the half turn (175 to -175 deg) by sign jumps from one limit to the other; nearest stays.
+  for (const float wantedDeg : {175.0f, -175.0f}) {
+    INFO(wantedDeg);
+    const glm::vec3 t = glm::angleAxis(glm::radians(wantedDeg), pitch.axis) * up;
+    const glm::vec2 bySign = rise::SolveTwoAxes(pitch, roll, up, t, rise::RangeClamp::kBySign);
+    const glm::vec2 nearest = rise::SolveTwoAxes(pitch, roll, up, t, rise::RangeClamp::kNearest);
+    CHECK(bySign.x == doctest::Approx(wantedDeg > 0.0f ? pitch.upper : pitch.lower));
+    // 175 deg is 135 deg round from -50 and 145 from 30; -175 is 125 from -50 and 155 from 30.
+    CHECK(nearest.x == doctest::Approx(pitch.lower));
+    CHECK(nearest.y == doctest::Approx(0.0f).epsilon(1e-4));
+    CHECK(glm::dot(turned(nearest), t) >= glm::dot(turned(bySign), t) - 1e-5f);
+  }
+  // Within range both give the exact turn.
+  const glm::vec3 inside = glm::angleAxis(glm::radians(-20.0f), pitch.axis) * up;
+  CHECK(rise::SolveTwoAxes(pitch, roll, up, inside, rise::RangeClamp::kNearest).x == doctest::Approx(glm::radians(-20.0f)));
+  CHECK(rise::SolveTwoAxes(pitch, roll, up, inside, rise::RangeClamp::kBySign).x == doctest::Approx(glm::radians(-20.0f)));
+}
+
 TEST_CASE("a planted hand's palm turns as close to the ground as the wrist's two DOF allow") {
   const rise::BipedDef def = rise::MakeBipedDef(1.75f, 70.0f);
   const rise::BodyRig rig = rise::BodyRig::FromDef(def);
