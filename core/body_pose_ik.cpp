@@ -163,14 +163,17 @@ BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseG
 
     // The end: its key direction as the goal rotation has it, in the lower bone's frame.
     // A sole the ankle cannot turn flat is turned as near it as its range
-    // allows: clamped by sign, a foot planted for the roll's push off, its shin
-    // led round by the trunk's goal, had its ankle flipped from full plantar
-    // flexion (-50 deg) to full dorsiflexion (30) in one step, which kicked it
-    // off the ground; it came down 4-5 cm away and slid (bench/prone_variants
-    // 48 supine: 33 -> 35 pass every bar; stress seeds 5001-6000 and 9001-9500
-    // stood 1042 -> 1055). A wrist clamped that way keeps the palm toward the
-    // ground: turned the nearer way, the place's hands pressed their fingers
-    // down and slid 15-17 cm in all 24 side_left starts.
+    // allows. A far foot planted for the roll's push off, its shin led round by
+    // the trunk's goal, is asked for a pitch that sweeps through the half turn
+    // and on to 155 deg (range -50..30): clamped by sign, the commanded pitch
+    // jumped from -50 to 30 deg as it crossed 180 and kicked the foot off the
+    // ground; it came down 4-5 cm away and slid. Clamped to the nearer limit it
+    // holds -50 until 170 deg, where both limits are as far: the jump still
+    // comes, later (20 ms in bench/prone_variants supine k=0, whose foot then
+    // slides 5.3 cm instead of 5.8). 48 supine starts: 33 -> 35 pass every bar;
+    // stress seeds 5001-6000 and 9001-9500 stood 1042 -> 1055. A wrist clamped
+    // that way keeps the palm toward the ground: turned the nearer way, the place's hands pressed
+    // their fingers down and slid 15-17 cm in all 24 side_left starts.
     const glm::quat lowerWorld = pose.worldRotations[rig.lower[i]];
     const glm::vec3 wanted = glm::normalize(glm::inverse(lowerWorld) * (limbGoal.endRotation * rig.endKey[i]));
     const glm::vec2 end = SolveTwoAxes(rig.endDofs[i][0], rig.endDofs[i][1], rig.endKey[i], wanted,
