@@ -156,10 +156,17 @@ BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseG
     const glm::vec2 rootAngles = limbGoal.angles ? glm::vec2(limbGoal.angles->x, limbGoal.angles->y)
                                                  : SolveTwoAxes(rig.rootDofs[i][0], rig.rootDofs[i][1],
                                                                 glm::normalize(limbVector), toward);
+    // The arm turn leaves an arm out at 90 deg of abduction, where its flexion
+    // only turns it about itself; the place's lifted swing from there had the
+    // IK flip that flexion from -55 to 113 deg at its first step, and the hand
+    // turning with it swept a corner 9.8 cm along the ground (samples/tall.json).
+    const bool flipped = limbGoal.swingAngles && std::fabs(rootAngles.x - limbGoal.swingAngles->x) > kMaxSwingTwist;
+    const glm::vec3 angles = flipped ? *limbGoal.swingAngles : glm::vec3(rootAngles, bend);
+    const glm::quat hingeTurn = flipped ? glm::angleAxis(angles.z, hinge.axis) : hingeRotation;
     const glm::quat rootRotation =
-        glm::angleAxis(rootAngles.x, rig.rootDofs[i][0].axis) * glm::angleAxis(rootAngles.y, rig.rootDofs[i][1].axis);
+        glm::angleAxis(angles.x, rig.rootDofs[i][0].axis) * glm::angleAxis(angles.y, rig.rootDofs[i][1].axis);
     pose.worldRotations[rig.upper[i]] = glm::normalize(parent * rootRotation);
-    pose.worldRotations[rig.lower[i]] = glm::normalize(pose.worldRotations[rig.upper[i]] * hingeRotation);
+    pose.worldRotations[rig.lower[i]] = glm::normalize(pose.worldRotations[rig.upper[i]] * hingeTurn);
 
     // The end: its key direction as the goal rotation has it, in the lower bone's frame.
     // A sole the ankle cannot turn flat is turned as near it as its range
@@ -183,7 +190,7 @@ BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseG
     pose.worldRotations[rig.end[i]] = glm::normalize(lowerWorld * endFirst * endSecond);
 
     const glm::vec3 endKey = endFirst * endSecond * rig.endKey[i];
-    pose.reached[i] = glm::length(rootRotation * limbVector - reach) < 1e-3f;
+    pose.reached[i] = glm::length(rootRotation * (upperBone + hingeTurn * lowerBone) - reach) < 1e-3f;
     pose.endMatched[i] = glm::dot(endKey, wanted) > kEndKeyCos;
   }
 

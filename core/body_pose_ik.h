@@ -41,7 +41,15 @@ struct LimbGoal {
   // and `target` is only where they put the wrist or ankle: at 90 deg of shoulder abduction the
   // target no longer tells how the arm is turned about itself.
   std::optional<glm::vec3> angles;
+  // When set (a swing in the joints lifted toward `target`, which the IK solves for): the angles
+  // the swing is at. A solution whose root turns the limb more than kMaxSwingTwist about its first
+  // axis from them (at 90 deg of shoulder abduction, where the target leaves that turn open and
+  // the solution flips) is dropped for these angles as they are.
+  std::optional<glm::vec3> swingAngles;
 };
+
+// See LimbGoal::swingAngles.
+inline constexpr float kMaxSwingTwist = 1.5707964f;  // rad (90 deg)
 
 struct PoseGoal {
   glm::vec3 pelvisPosition{0.0f};  // the pelvis (root) joint, world

@@ -233,6 +233,7 @@ void RiseController::EvaluateLimb(const LimbMove& limb, Limb which, float s, con
   const float turn = Blend(s, limb.delay + limb.turnDelay * limb.span, (1.0f - limb.turnDelay) * limb.span);
   const glm::quat rotation = glm::slerp(limb.fromRotation, limb.toRotation, turn);
   out.angles.reset();
+  out.swingAngles.reset();
   switch (limb.mode) {
     case LimbMode::kWorld:
       out.target = limb.lift > 0.0f ? SwingPath{limb.from, limb.to, ground_.normal, limb.lift}.At(u)
@@ -264,9 +265,13 @@ void RiseController::EvaluateLimb(const LimbMove& limb, Limb which, float s, con
       out.endRotation = glm::normalize(lower * rotation);
       // The lift rises early and holds, so a limb leaves the ground before the
       // swing has carried it far along it; the IK then finds the angles that
-      // raise it. Without one the angles are the goal as they are.
+      // raise it, near the swing's own. Without one the angles are the goal as they are.
       out.target += ground_.normal * (limb.lift * std::min(1.0f, 8.0f * u * (1.0f - u)));
-      if (limb.lift <= 0.0f) out.angles = angles;
+      if (limb.lift <= 0.0f) {
+        out.angles = angles;
+      } else {
+        out.swingAngles = angles;
+      }
       break;
     }
   }

@@ -125,3 +125,32 @@ TEST_CASE("a planted hand's palm turns as close to the ground as the wrist's two
   }
 }
 }
+
+TEST_SUITE("body_pose_ik") {
+TEST_CASE("a lifted swing at 90 deg of shoulder abduction keeps its own turn of the arm about itself") {
+  // The arm turn leaves an arm out to the side with the shoulder at 90 deg of
+  // abduction, where flexion only turns the arm about itself. Lifted a few cm,
+  // the wrist target there leaves that turn to the IK, which picks its own.
+  const rise::BipedDef def = rise::MakeBipedDef(1.75f, 70.0f);
+  const rise::BodyRig rig = rise::BodyRig::FromDef(def);
+  rise::PoseGoal goal = StandingGoal(def, rig);
+  const int arm = 0;
+  const glm::vec3 swing(glm::radians(-55.0f), glm::radians(91.0f), 0.0f);
+  const glm::quat upper = glm::angleAxis(swing.x, rig.rootDofs[arm][0].axis) * glm::angleAxis(swing.y, rig.rootDofs[arm][1].axis);
+  const glm::vec3 wrist = rise::LimbRoot(def.skeleton, rig, goal, rise::Limb::kHandLeft) +
+                          upper * (def.skeleton.joints[rig.lower[arm]].restOffset + def.skeleton.joints[rig.end[arm]].restOffset);
+  goal.limbs[arm].target = wrist + glm::vec3(0.0f, 0.03f, 0.0f);
+  goal.limbs[arm].endRotation = upper;
+  auto flexion = [&](const rise::BodyPose& pose) {
+    float angles[3] = {};
+    def.JointAngles(rig.upper[arm], rise::LocalRotations(def.skeleton, pose.worldRotations)[rig.upper[arm]], angles);
+    return angles[0];
+  };
+  const float free = flexion(rise::SolveBodyPose(def.skeleton, rig, goal));
+  goal.limbs[arm].swingAngles = swing;
+  const float kept = flexion(rise::SolveBodyPose(def.skeleton, rig, goal));
+  INFO("flexion: the IK's own " << free << " deg, with the swing's angles " << kept << " deg");
+  CHECK(std::fabs(free - glm::degrees(swing.x)) > glm::degrees(rise::kMaxSwingTwist));  // the flip this guards against
+  CHECK(kept == doctest::Approx(glm::degrees(swing.x)).epsilon(1e-3));
+}
+}
