@@ -19,6 +19,7 @@
 #include "export/skeleton.h"
 
 #include <glm/gtc/quaternion.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -49,7 +50,7 @@ struct LimbGoal {
 };
 
 // See LimbGoal::swingAngles.
-inline constexpr float kMaxSwingTwist = 1.5707964f;  // rad (90 deg)
+inline constexpr float kMaxSwingTwist = glm::radians(90.0f);
 
 struct PoseGoal {
   glm::vec3 pelvisPosition{0.0f};  // the pelvis (root) joint, world
