@@ -791,7 +791,8 @@ TEST_CASE("phase 2: a rise that tips forward off its toes is caught on the hands
   // start whose rise tips has moved as the controller changed (seed 80, then
   // 30 once landings were solved with exact joints, then 414 once the crawl
   // went at least at pace 1); since a lifted swing keeps its own turn of the
-  // arm at the shoulder's 90 deg it is stress seed 5071's (1.48 m on 7.5 deg).
+  // arm at the shoulder's 90 deg it is stress seed 5071's (1.48 m on 7.5 deg;
+  // not re-checked with the catch switched off).
   const rise::GeneratedClip result = GenerateTraced(
       R"({"character":{"height_m":1.479,"mass_kg":70.489},"fps":240.0,"seed":5071,"start":{"drop_height_m":0.937,"joints_deg":{"abdomen":[-12.526,-5.527,-7.765],"chest":[-11.101,4.113,-27.142],"foot_l":[-11.107,25.953],"foot_r":[-39.909,12.017],"forearm_l":[66.903],"forearm_r":[52.611],"hand_l":[69.37,18.103],"hand_r":[-1.125,0.61],"head":[-41.726,15.802,53.173],"shin_l":[10.864],"shin_r":[81.529],"thigh_l":[-6.987,2.89],"thigh_r":[85.345,-28.771],"upper_arm_l":[149.086,-0.628],"upper_arm_r":[65.205,11.753]},"posture":"custom","root_euler_deg":[151.334,-29.764,88.239]},"style":{"look_around":0.596,"speed":1.731,"stance_width_m":0.221,"step_height_m":0.185,"sway":0.865,"tiredness":0.039},"terrain":{"friction":0.71,"slope_deg":7.488}})");
   REQUIRE_FALSE(result.trace.empty());
@@ -925,7 +926,8 @@ TEST_CASE("phase 0: a hand the place left up comes out round the side before it 
   // and the body fell. Now the raised arm comes out round the side first.
   // Since landings are solved with exact joints, seed 74 lands otherwise, and
   // since a lifted swing keeps its own turn of the arm at the shoulder's 90
-  // deg, seed 41 does; stress seed 5015's place leaves a hand up the same way.
+  // deg, seed 41 does; stress seed 5015's place leaves a hand up the same way
+  // (not re-checked with the arm out switched off).
   const rise::GeneratedClip result = GenerateTraced(
       R"({"character":{"height_m":1.757,"mass_kg":103.378},"fps":240.0,"seed":5015,"start":{"drop_height_m":0.839,"joints_deg":{"abdomen":[30.487,23.506,17.997],"chest":[-4.398,10.433,29.757],"foot_l":[-42.133,14.892],"foot_r":[-2.227,-17.951],"forearm_l":[93.928],"forearm_r":[48.591],"hand_l":[6.103,-27.824],"hand_r":[-57.032,-1.466],"head":[-25.035,-29.1,-49.817],"shin_l":[12.144],"shin_r":[82.8],"thigh_l":[73.384,-5.155],"thigh_r":[53.763,-0.436],"upper_arm_l":[159.583,54.286],"upper_arm_r":[151.599,-0.17]},"posture":"custom","root_euler_deg":[-74.397,-61.996,-109.444]},"style":{"look_around":0.752,"speed":2.605,"stance_width_m":0.361,"step_height_m":0.236,"sway":0.938,"tiredness":0.54},"terrain":{"friction":0.747,"slope_deg":2.84}})");
   REQUIRE_FALSE(result.trace.empty());
