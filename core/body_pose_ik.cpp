@@ -179,8 +179,9 @@ BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseG
     // comes, later (20 ms in bench/prone_variants supine k=0, whose foot then
     // slides 5.3 cm instead of 5.8). 48 supine starts: 33 -> 35 pass every bar;
     // stress seeds 5001-6000 and 9001-9500 stood 1042 -> 1055. A wrist clamped
-    // that way keeps the palm toward the ground: turned the nearer way, the place's hands pressed
-    // their fingers down and slid 15-17 cm in all 24 side_left starts.
+    // that way keeps the palm toward the ground: turned the nearer way, the
+    // place's hands pressed their fingers down and slid 15-17 cm in all 24
+    // side_left starts.
     const glm::quat lowerWorld = pose.worldRotations[rig.lower[i]];
     const glm::vec3 wanted = glm::normalize(glm::inverse(lowerWorld) * (limbGoal.endRotation * rig.endKey[i]));
     const glm::vec2 end = SolveTwoAxes(rig.endDofs[i][0], rig.endDofs[i][1], rig.endKey[i], wanted,

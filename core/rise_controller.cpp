@@ -516,11 +516,10 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
   trace_.pressure = shared.pressure;
   trace_.load = shared.share;
   trace_.heading = heading_;
+  // Zero while no side is chosen (after a fall, say), not the last roll's angles.
   trace_.rollSide = rollSign_;
-  if (rollSign_ != 0.0f) {
-    trace_.pelvisRoll = RollAngle(reading.jointRotations[rig_.pelvis]);
-    trace_.chestRoll = RollAngle(reading.jointRotations[rig_.chest]);
-  }
+  trace_.pelvisRoll = rollSign_ != 0.0f ? RollAngle(reading.jointRotations[rig_.pelvis]) : 0.0f;
+  trace_.chestRoll = rollSign_ != 0.0f ? RollAngle(reading.jointRotations[rig_.chest]) : 0.0f;
   trace_.touching = reading.touching;
   trace_.planted = planted_;
   for (int i = 0; i < kLimbCount; ++i) {
