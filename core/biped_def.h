@@ -38,12 +38,12 @@
 //   abdomen         flexion +X  [-25, 45]     bend left -Z  [-25, 25]     twist left +Y [-30, 30]
 //   chest           flexion +X  [-20, 40]     bend left -Z  [-20, 20]     twist left +Y [-35, 35]
 //   head (neck)     flexion +X  [-50, 60]     bend left -Z  [-40, 40]     twist left +Y [-70, 70]
-//   upper_arm       flexion -X  [-60, 170]    abduction +-Z [-30, 80]
+//   upper_arm       flexion -X  [-60, 170]    abduction +-Z [-30, 100]
 //   forearm (elbow) flexion -X  [0, 150]      (forearm swings forward)
 //   hand (wrist)    flexion -+Z [-70, 80]     radial dev. -X [-35, 20]
 //   thigh (hip)     flexion -X  [-30, 120]    abduction +-Z [-30, 50]
 //   shin (knee)     flexion +X  [0, 150]      (shin swings backward)
-//   foot (ankle)    dorsiflexion -X [-50, 30] inversion -+Z [-20, 35]
+//   foot (ankle)    dorsiflexion -X [-50, 40] inversion -+Z [-20, 35]
 // where "+-Z" means +Z on the left side and -Z on the right (and "-+Z" the reverse).
 // A universal joint's second angle stays well inside +-90 deg: there the Cardan joint of the
 // engine (physics/joint.h) is in gimbal lock, so arms go overhead by flexion, not abduction.

@@ -26,15 +26,34 @@ int RequireJoint(const Skeleton& skeleton, const char* name) {
 // spine bends evenly over its two joints.
 glm::quat Abdomen(const PoseGoal& goal) { return glm::slerp(goal.pelvisRotation, goal.chestRotation, 0.5f); }
 
-float ClampToRange(float angle, const BodyRig::Axis& axis, RangeClamp clamp) {
-  if (clamp == RangeClamp::kBySign || (angle >= axis.lower && angle <= axis.upper)) {
-    return std::clamp(angle, axis.lower, axis.upper);
-  }
+bool InRange(float angle, const BodyRig::Axis& axis) { return angle >= axis.lower && angle <= axis.upper; }
+
+// The turn about the unit axis u that carries w's part across u onto s's (0 when either lies along u).
+float TurnAbout(const glm::vec3& u, const glm::vec3& w, const glm::vec3& s) {
+  const glm::vec3 wp = w - u * glm::dot(w, u), sp = s - u * glm::dot(s, u);
+  if (glm::length(wp) <= 1e-6f || glm::length(sp) <= 1e-6f) return 0.0f;
+  return std::atan2(glm::dot(u, glm::cross(wp, sp)), glm::dot(wp, sp));
+}
+
+// The in-range turn nearest `angle` round the circle. How close a turn about one axis brings a
+// direction to another falls off as the cosine of its distance from the best turn, so out of
+// range the closer of the two limits is the one nearer round the circle.
+float NearestInRange(float angle, const BodyRig::Axis& axis) {
+  if (InRange(angle, axis)) return angle;
   const float turn = 2.0f * glm::pi<float>();
   const float toLower = std::fabs(std::remainder(angle - axis.lower, turn));
   const float toUpper = std::fabs(std::remainder(angle - axis.upper, turn));
   return toLower <= toUpper ? axis.lower : axis.upper;
 }
+
+// The plan turns an ankle's dorsiflexion only this far short of the joint's
+// limit (40 deg, what a loaded ankle gives in a squat): the servos then never
+// drive it into its stop, and the body's weight can still bend it the rest of
+// the way. Over 1500 stress starts (seeds 5001-6000, 9001-9500), planned to
+// the full 40 deg / 5 short / 10 short: stood 1119 / 1121 / 1058, up to 10 deg
+// of slope 892 / 898 / 870 of 973; bench/prone_variants 48 supine passed
+// every bar 39 / 43 / 48, 48 prone on 10 deg stood 30 / 34 / 30.
+constexpr float kAnklePlanMargin = glm::radians(5.0f);
 
 }  // namespace
 
@@ -65,6 +84,7 @@ BodyRig BodyRig::FromDef(const BipedDef& def) {
     rig.rootDofs[i] = {axis(upper.dofs[0]), axis(upper.dofs[1])};
     rig.hinge[i] = axis(lower.dofs[0]);
     rig.endDofs[i] = {axis(end.dofs[0]), axis(end.dofs[1])};
+    if (!IsArm(static_cast<Limb>(i))) rig.endDofs[i][0].upper -= kAnklePlanMargin;
     // The palm faces the thigh in the bind pose (-X on the left, +X on the right).
     const bool left = i == 0;
     rig.endKey[i] = IsArm(static_cast<Limb>(i)) ? glm::vec3(left ? -1.0f : 1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
@@ -81,27 +101,44 @@ glm::vec2 SolveTwoAxes(const BodyRig::Axis& axis0, const BodyRig::Axis& axis1, c
   const float B = glm::dot(glm::cross(a1, v), a0);
   const float C = glm::dot(t, a0);
   const float radius = std::sqrt(A * A + B * B);
-  float b = 0.0f;
+  // Of the two solutions for b (each already in [-pi, pi]), the one nearer the
+  // joint's range (then the smaller turn) first.
+  std::array<float, 2> roots{0.0f, 0.0f};
   if (radius > 1e-6f) {
     const float phase = std::atan2(B, A);
     const float spread = std::acos(std::clamp(C / radius, -1.0f, 1.0f));
-    // Of the two solutions (each already in [-pi, pi]), the one nearer the
-    // joint's range (then the smaller turn).
     const auto cost = [&](float angle) {
       const float outside = std::max(0.0f, axis1.lower - angle) + std::max(0.0f, angle - axis1.upper);
       return std::make_pair(outside, std::fabs(angle));
     };
-    const float first = std::remainder(phase + spread, 2.0f * glm::pi<float>());
-    const float second = std::remainder(phase - spread, 2.0f * glm::pi<float>());
-    b = cost(first) <= cost(second) ? first : second;
+    roots = {std::remainder(phase + spread, 2.0f * glm::pi<float>()), std::remainder(phase - spread, 2.0f * glm::pi<float>())};
+    if (cost(roots[1]) < cost(roots[0])) std::swap(roots[0], roots[1]);
   }
-  b = ClampToRange(b, axis1, clamp);
   // Then the turn about a0 that carries the result onto t.
-  const glm::vec3 p = glm::angleAxis(b, a1) * v;
-  const glm::vec3 pp = p - a0 * glm::dot(p, a0), tp = t - a0 * glm::dot(t, a0);
-  float a = 0.0f;
-  if (glm::length(pp) > 1e-6f && glm::length(tp) > 1e-6f) a = std::atan2(glm::dot(a0, glm::cross(pp, tp)), glm::dot(pp, tp));
-  return {ClampToRange(a, axis0, clamp), b};
+  if (clamp == RangeClamp::kBySign) {
+    const float b = std::clamp(roots[0], axis1.lower, axis1.upper);
+    return {std::clamp(TurnAbout(a0, glm::angleAxis(b, a1) * v, t), axis0.lower, axis0.upper), b};
+  }
+  for (const float b : roots) {
+    const float a = TurnAbout(a0, glm::angleAxis(b, a1) * v, t);
+    if (InRange(a, axis0) && InRange(b, axis1)) return {a, b};
+  }
+  // Out of reach, the closest direction the ranges allow lies on their edge: one angle at a limit,
+  // the other the best turn given it. Clamping each angle on its own instead left the second one
+  // where the unreachable turn had put it.
+  glm::vec2 best(0.0f);
+  float bestDot = -2.0f;
+  const auto consider = [&](float a, float b) {
+    const float closeness = glm::dot(glm::angleAxis(a, a0) * (glm::angleAxis(b, a1) * v), t);
+    if (closeness > bestDot) bestDot = closeness, best = {a, b};
+  };
+  for (const float a : {axis0.lower, axis0.upper}) {
+    consider(a, NearestInRange(TurnAbout(a1, v, glm::angleAxis(-a, a0) * t), axis1));
+  }
+  for (const float b : {axis1.lower, axis1.upper}) {
+    consider(NearestInRange(TurnAbout(a0, glm::angleAxis(b, a1) * v, t), axis0), b);
+  }
+  return best;
 }
 
 namespace {
@@ -170,22 +207,23 @@ BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseG
 
     // The end: its key direction as the goal rotation has it, in the lower bone's frame.
     // A sole the ankle cannot turn flat is turned as near it as its range
-    // allows. A far foot planted for the roll's push off, its shin led round by
-    // the trunk's goal, is asked for a pitch that sweeps through the half turn
-    // and on to 155 deg (range -50..30): clamped by sign, the commanded pitch
-    // jumped from -50 to 30 deg as it crossed 180 and kicked the foot off the
-    // ground; it came down 4-5 cm away and slid. Clamped to the nearer limit it
-    // holds -50 until 170 deg, where both limits are as far: the jump still
-    // comes, later (20 ms in bench/prone_variants supine k=0, whose foot then
-    // slides 5.3 cm instead of 5.8). 48 supine starts: 33 -> 35 pass every bar;
-    // stress seeds 5001-6000 and 9001-9500 stood 1042 -> 1055. A wrist clamped
-    // that way keeps the palm toward the ground: turned the nearer way, the
-    // place's hands pressed their fingers down and slid 15-17 cm in all 24
-    // side_left starts.
+    // allows, both angles together (RangeClamp::kClosest). A far foot planted
+    // for the roll's push off, its shin led round by the trunk's goal, is asked
+    // for a pitch beyond its range; clamped each on its own, the pitch sat at
+    // its limit while the roll stayed where the unreachable turn put it, and
+    // the foot, pressed on its edge, slid 5-7 cm as the hips went over (15 of
+    // bench/prone_variants' 48 supine starts; clamped by sign it also jumped
+    // from one pitch limit to the other across the half turn, as it still does
+    // once the sole is closer to the other limit). With the roll turned as far
+    // toward flat as it goes at that pitch, 47 of the 48 passed (the ankle's
+    // range then -50..30 deg; 43 with today's range and plan margin). A
+    // wrist keeps the by-sign clamp: turned the nearer way round, the place's
+    // hands pressed their fingers down and slid 15-17 cm in all 24 side_left
+    // starts.
     const glm::quat lowerWorld = pose.worldRotations[rig.lower[i]];
     const glm::vec3 wanted = glm::normalize(glm::inverse(lowerWorld) * (limbGoal.endRotation * rig.endKey[i]));
     const glm::vec2 end = SolveTwoAxes(rig.endDofs[i][0], rig.endDofs[i][1], rig.endKey[i], wanted,
-                                       IsArm(limb) ? RangeClamp::kBySign : RangeClamp::kNearest);
+                                       IsArm(limb) ? RangeClamp::kBySign : RangeClamp::kClosest);
     const glm::quat endFirst = glm::angleAxis(end.x, rig.endDofs[i][0].axis);
     const glm::quat endSecond = glm::angleAxis(end.y, rig.endDofs[i][1].axis);
     pose.worldRotations[rig.end[i]] = glm::normalize(lowerWorld * endFirst * endSecond);

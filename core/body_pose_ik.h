@@ -91,14 +91,14 @@ struct BodyPose {
 // Solves the pose; a pure function of its inputs.
 BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseGoal& goal);
 
-// How SolveTwoAxes brings an angle beyond its joint's range into it.
+// How SolveTwoAxes keeps a turn beyond its joints' ranges within them.
 enum class RangeClamp {
-  kBySign,   // the limit on the angle's side in (-pi, pi]: across the half turn it jumps to the other
-  kNearest,  // the limit nearer round the circle, the one that turns v closer to t
+  kBySign,   // each angle to the limit on its side in (-pi, pi]: across the half turn it jumps to the other
+  kClosest,  // both together: the in-range pair that turns v closest to t (on the edge of the ranges)
 };
 
 // The angles (a, b) with R(axis0, a) R(axis1, b) v closest to t (unit vectors;
-// axis0 perpendicular to axis1), each clamped to its range.
+// axis0 perpendicular to axis1), kept in their ranges as `clamp` says.
 glm::vec2 SolveTwoAxes(const BodyRig::Axis& axis0, const BodyRig::Axis& axis1, const glm::vec3& v, const glm::vec3& t,
                        RangeClamp clamp = RangeClamp::kBySign);
 

@@ -2,6 +2,7 @@
 #include "core/generate.h"
 
 #include "core/biped.h"
+#include "core/clip_quality.h"
 #include "core/input_json.h"
 #include "export/clip_resample.h"
 
@@ -218,7 +219,11 @@ GeneratedClip GenerateClip(const RiseSpec& spec, const GenerateSettings& setting
   metadata.parametersJson = RiseSpecToJson(spec).dump();
   metadata.generatorVersion = RISE_VERSION;
   metadata.seed = spec.seed;
-  result.stood = controller.Standing(end);  // Finished() implies it
+  // Cut off by max_duration_s in its stand, a body has stood once it has stood
+  // for the window the quality check measures, though not yet still long enough
+  // to end the clip (samples/prone.json cut at 13.6 s, 1.1 s into its stand,
+  // passed every bar and was reported as "did not stand", exit 1).
+  result.stood = controller.StandingFor(end, QualityOptions{}.standWindow);  // Finished() implies it
   result.timeToStand = result.stood ? controller.StandTime() : -1.0;
   metadata.timeToStand = result.timeToStand;
   for (int j = 1; j < jointCount; ++j) {

@@ -215,8 +215,8 @@ const TraceSample& RiseController::LastTrace() const {
   return trace_;
 }
 
-bool RiseController::Standing(double time) const {
-  return phase_ == RisePhase::kStand && standTime_ >= 0.0 && time - standTime_ >= kStandHold;
+bool RiseController::StandingFor(double time, double seconds) const {
+  return phase_ == RisePhase::kStand && standTime_ >= 0.0 && time - standTime_ >= seconds;
 }
 
 bool RiseController::Fallen(const BodyReading& r) const {
@@ -473,7 +473,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
       }
     } else if (progress_ >= 1.0f && (lag < kGateStop || rolling)) {
       if (phase_ == RisePhase::kStand) {
-        finished_ = Standing(reading.time) && reading.maxBodySpeed < kRestSpeed;
+        finished_ = StandingFor(reading.time, kStandHold) && reading.maxBodySpeed < kRestSpeed;
         if (!finished_) PlanNext(reading);
       } else {
         PlanNext(reading);

@@ -113,10 +113,10 @@ class RiseController {
   RisePhase Phase() const { return phase_; }
   // True once the body has stood still, upright, long enough to end the clip.
   bool Finished() const { return finished_; }
-  // True if the body is in the stand phase and has held it long enough to
-  // count as standing, still or not (a body that sways on a slope never
-  // finishes, yet it stood).
-  bool Standing(double time) const;
+  // True if the body is in the stand phase and has held it for `seconds` by
+  // `time`, still or not (a body that sways on a slope never finishes, yet it
+  // stood). The clip ends early once it has held it kStandHold and is still.
+  bool StandingFor(double time, double seconds) const;
   // Time the body first reached the stand phase and held it; < 0 before.
   double StandTime() const { return standTime_; }
   // Limbs the plan treats as planted supports right now.

@@ -5,6 +5,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <random>
+
 namespace {
 
 // The standing bind pose as a goal: trunk upright, limbs at their bind positions.
@@ -69,7 +72,7 @@ TEST_CASE("two-axis turns reach any direction their ranges allow") {
   CHECK(clamped.y == doctest::Approx(glm::radians(-30.0f)));
 }
 
-TEST_CASE("two-axis turns out of range: by sign the nearer limit of the angle's value, nearest the nearer round the circle") {
+TEST_CASE("two-axis turns out of range: by sign each angle to the limit on its side, closest the best pair in range") {
   // An ankle (pitch -50..30 deg, roll -20..35 deg) asked to turn its sole 175 deg about the pitch axis.
   const rise::BodyRig::Axis pitch{{1, 0, 0}, glm::radians(-50.0f), glm::radians(30.0f)};
   const rise::BodyRig::Axis roll{{0, 0, 1}, glm::radians(-20.0f), glm::radians(35.0f)};
@@ -77,22 +80,58 @@ TEST_CASE("two-axis turns out of range: by sign the nearer limit of the angle's 
   auto turned = [&](const glm::vec2& angles) {
     return glm::angleAxis(angles.x, pitch.axis) * glm::angleAxis(angles.y, roll.axis) * up;
   };
-  // Across the half turn (175 to -175 deg) by sign jumps from one limit to the other; nearest stays.
+  // Across the half turn (175 to -175 deg) by sign jumps from one limit to the other; closest stays.
   for (const float wantedDeg : {175.0f, -175.0f}) {
     INFO(wantedDeg);
     const glm::vec3 t = glm::angleAxis(glm::radians(wantedDeg), pitch.axis) * up;
     const glm::vec2 bySign = rise::SolveTwoAxes(pitch, roll, up, t, rise::RangeClamp::kBySign);
-    const glm::vec2 nearest = rise::SolveTwoAxes(pitch, roll, up, t, rise::RangeClamp::kNearest);
+    const glm::vec2 closest = rise::SolveTwoAxes(pitch, roll, up, t, rise::RangeClamp::kClosest);
     CHECK(bySign.x == doctest::Approx(wantedDeg > 0.0f ? pitch.upper : pitch.lower));
     // 175 deg is 135 deg round from -50 and 145 from 30; -175 is 125 from -50 and 155 from 30.
-    CHECK(nearest.x == doctest::Approx(pitch.lower));
-    CHECK(nearest.y == doctest::Approx(0.0f).epsilon(1e-4));
-    CHECK(glm::dot(turned(nearest), t) >= glm::dot(turned(bySign), t) - 1e-5f);
+    // Nearly opposite its target, the sole also rolls to its wider limit: turned out of the plane
+    // of the two, it points less away from the target.
+    CHECK(closest.x == doctest::Approx(pitch.lower));
+    CHECK(closest.y == doctest::Approx(roll.upper));
+    CHECK(glm::dot(turned(closest), t) >= glm::dot(turned(bySign), t) - 1e-5f);
   }
+  // Pitched beyond its limit and rolled within range, the sole keeps its roll: by sign the roll
+  // stays where the unreachable turn put it, which is no longer the best at the limit's pitch.
+  const glm::vec3 pitchedAndRolled =
+      glm::angleAxis(glm::radians(-80.0f), pitch.axis) * glm::angleAxis(glm::radians(30.0f), roll.axis) * up;
+  const glm::vec2 bySign = rise::SolveTwoAxes(pitch, roll, up, pitchedAndRolled, rise::RangeClamp::kBySign);
+  const glm::vec2 closest = rise::SolveTwoAxes(pitch, roll, up, pitchedAndRolled, rise::RangeClamp::kClosest);
+  CHECK(closest.x == doctest::Approx(pitch.lower));
+  CHECK(glm::dot(turned(closest), pitchedAndRolled) > glm::dot(turned(bySign), pitchedAndRolled) + 1e-3f);
   // Within range both give the exact turn.
   const glm::vec3 inside = glm::angleAxis(glm::radians(-20.0f), pitch.axis) * up;
-  CHECK(rise::SolveTwoAxes(pitch, roll, up, inside, rise::RangeClamp::kNearest).x == doctest::Approx(glm::radians(-20.0f)));
+  CHECK(rise::SolveTwoAxes(pitch, roll, up, inside, rise::RangeClamp::kClosest).x == doctest::Approx(glm::radians(-20.0f)));
   CHECK(rise::SolveTwoAxes(pitch, roll, up, inside, rise::RangeClamp::kBySign).x == doctest::Approx(glm::radians(-20.0f)));
+}
+
+TEST_CASE("two-axis turns, closest: no pair in the ranges turns the key nearer the target") {
+  // Against a search over the ranges at 0.5 deg, for directions all round the sphere.
+  const rise::BodyRig::Axis pitch{{1, 0, 0}, glm::radians(-50.0f), glm::radians(30.0f)};
+  const rise::BodyRig::Axis roll{{0, 0, 1}, glm::radians(-20.0f), glm::radians(35.0f)};
+  const glm::vec3 up(0, 1, 0);
+  auto closeness = [&](float a, float b, const glm::vec3& t) {
+    return glm::dot(glm::angleAxis(a, pitch.axis) * glm::angleAxis(b, roll.axis) * up, t);
+  };
+  std::mt19937 random(7);
+  std::normal_distribution<float> normal;
+  for (int k = 0; k < 60; ++k) {
+    const glm::vec3 t = glm::normalize(glm::vec3(normal(random), normal(random), normal(random)));
+    const glm::vec2 closest = rise::SolveTwoAxes(pitch, roll, up, t, rise::RangeClamp::kClosest);
+    CHECK(closest.x >= pitch.lower);
+    CHECK(closest.x <= pitch.upper);
+    CHECK(closest.y >= roll.lower);
+    CHECK(closest.y <= roll.upper);
+    float searched = -2.0f;
+    for (float a = pitch.lower; a <= pitch.upper; a += glm::radians(0.5f)) {
+      for (float b = roll.lower; b <= roll.upper; b += glm::radians(0.5f)) searched = std::max(searched, closeness(a, b, t));
+    }
+    INFO("t " << t.x << " " << t.y << " " << t.z);
+    CHECK(closeness(closest.x, closest.y, t) >= searched - 1e-5f);
+  }
 }
 
 TEST_CASE("a planted hand's palm turns as close to the ground as the wrist's two DOF allow") {
