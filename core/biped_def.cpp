@@ -313,10 +313,11 @@ BipedDef MakeBipedDef(float heightM, float massKg, const SegmentOverrides& overr
     add("shin" + s, "thigh" + s, {0, -thigh.length, 0}, &shin, {0, -0.5f * shin.length, 0},
         joint(JointKind::kHinge, TorquePerKg::kKnee, {Dof("flexion", kX, 0, 150)}));
     // Dorsiflexion to 40 deg: with the knee bent and the body's weight on it, as
-    // in a squat, an ankle bends about that far (30 is its unloaded range). At 30
-    // a body squatting to rise facing up a slope could not bring its CoM over its
-    // feet: 1500 stress starts stood 1070 -> 1121 with 40 (with the plan 5 deg
-    // short of it, see body_pose_ik.cpp), 868 -> 898 of 973 up to 10 deg of slope.
+    // in a squat, an ankle bends about that far, further than it is bent
+    // unloaded. At 30 a body squatting to rise facing up a slope could not bring
+    // its CoM over its feet: 1500 stress starts stood 1070 -> 1124 with 40 (the
+    // plan 5 deg short of it, see body_pose_ik.cpp), 868 -> 900 of 973 up to 10
+    // deg of slope.
     add("foot" + s, "shin" + s, {0, -shin.length, 0}, &foot,
         {0, -0.5f * foot.depth, (0.5f - kHeelBehindAnkle) * foot.length},
         joint(JointKind::kUniversal, TorquePerKg::kAnkle,

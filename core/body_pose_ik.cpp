@@ -50,8 +50,8 @@ float NearestInRange(float angle, const BodyRig::Axis& axis) {
 // limit (40 deg, what a loaded ankle gives in a squat): the servos then never
 // drive it into its stop, and the body's weight can still bend it the rest of
 // the way. Over 1500 stress starts (seeds 5001-6000, 9001-9500), planned to
-// the full 40 deg / 5 short / 10 short: stood 1119 / 1121 / 1058, up to 10 deg
-// of slope 892 / 898 / 870 of 973; bench/prone_variants 48 supine passed
+// the full 40 deg / 5 short / 10 short: stood 1119 / 1124 / 1058, up to 10 deg
+// of slope 892 / 900 / 870 of 973; bench/prone_variants 48 supine passed
 // every bar 39 / 43 / 48, 48 prone on 10 deg stood 30 / 34 / 30.
 constexpr float kAnklePlanMargin = glm::radians(5.0f);
 
@@ -216,10 +216,12 @@ BodyPose SolveBodyPose(const Skeleton& skeleton, const BodyRig& rig, const PoseG
     // from one pitch limit to the other across the half turn, as it still does
     // once the sole is closer to the other limit). With the roll turned as far
     // toward flat as it goes at that pitch, 47 of the 48 passed (the ankle's
-    // range then -50..30 deg; 43 with today's range and plan margin). A
-    // wrist keeps the by-sign clamp: turned the nearer way round, the place's
-    // hands pressed their fingers down and slid 15-17 cm in all 24 side_left
-    // starts.
+    // range then -50..30 deg; 43 with today's range and plan margin). Not for
+    // every body: the 8 back starts of samples/library.json (1.75 and 1.95 m)
+    // slid 4.1-4.9 cm before and 5.5-6.1 cm after, and over 144 back starts of
+    // 1.50-2.05 m 72 -> 68 passed (74 with today's range). A wrist keeps the
+    // by-sign clamp: turned the nearer way round, the place's hands pressed
+    // their fingers down and slid 15-17 cm in all 24 side_left starts.
     const glm::quat lowerWorld = pose.worldRotations[rig.lower[i]];
     const glm::vec3 wanted = glm::normalize(glm::inverse(lowerWorld) * (limbGoal.endRotation * rig.endKey[i]));
     const glm::vec2 end = SolveTwoAxes(rig.endDofs[i][0], rig.endDofs[i][1], rig.endKey[i], wanted,
