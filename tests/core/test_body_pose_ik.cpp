@@ -21,6 +21,16 @@ rise::PoseGoal StandingGoal(const rise::BipedDef& def, const rise::BodyRig& rig)
   return goal;
 }
 
+// An ankle's two axes (pitch -50..30 deg, roll -20..35 deg) and its sole's key direction.
+const rise::BodyRig::Axis kPitch{{1, 0, 0}, glm::radians(-50.0f), glm::radians(30.0f)};
+const rise::BodyRig::Axis kRoll{{0, 0, 1}, glm::radians(-20.0f), glm::radians(35.0f)};
+const glm::vec3 kUp(0, 1, 0);
+
+// The sole's key turned by (pitch, roll).
+glm::vec3 TurnedSole(const glm::vec2& angles) {
+  return glm::angleAxis(angles.x, kPitch.axis) * glm::angleAxis(angles.y, kRoll.axis) * kUp;
+}
+
 }  // namespace
 
 TEST_SUITE("body_pose_ik") {
@@ -73,13 +83,10 @@ TEST_CASE("two-axis turns reach any direction their ranges allow") {
 }
 
 TEST_CASE("two-axis turns out of range: by sign each angle to the limit on its side, closest the best pair in range") {
-  // An ankle (pitch -50..30 deg, roll -20..35 deg) asked to turn its sole 175 deg about the pitch axis.
-  const rise::BodyRig::Axis pitch{{1, 0, 0}, glm::radians(-50.0f), glm::radians(30.0f)};
-  const rise::BodyRig::Axis roll{{0, 0, 1}, glm::radians(-20.0f), glm::radians(35.0f)};
-  const glm::vec3 up(0, 1, 0);
-  auto turned = [&](const glm::vec2& angles) {
-    return glm::angleAxis(angles.x, pitch.axis) * glm::angleAxis(angles.y, roll.axis) * up;
-  };
+  // An ankle asked to turn its sole 175 deg about the pitch axis.
+  const rise::BodyRig::Axis& pitch = kPitch;
+  const rise::BodyRig::Axis& roll = kRoll;
+  const glm::vec3& up = kUp;
   // Across the half turn (175 to -175 deg) by sign jumps from one limit to the other; closest stays.
   for (const float wantedDeg : {175.0f, -175.0f}) {
     INFO(wantedDeg);
@@ -92,7 +99,7 @@ TEST_CASE("two-axis turns out of range: by sign each angle to the limit on its s
     // of the two, it points less away from the target.
     CHECK(closest.x == doctest::Approx(pitch.lower));
     CHECK(closest.y == doctest::Approx(roll.upper));
-    CHECK(glm::dot(turned(closest), t) >= glm::dot(turned(bySign), t) - 1e-5f);
+    CHECK(glm::dot(TurnedSole(closest), t) >= glm::dot(TurnedSole(bySign), t) - 1e-5f);
   }
   // Pitched beyond its limit and rolled within range, the sole keeps its roll: by sign the roll
   // stays where the unreachable turn put it, which is no longer the best at the limit's pitch.
@@ -101,7 +108,7 @@ TEST_CASE("two-axis turns out of range: by sign each angle to the limit on its s
   const glm::vec2 bySign = rise::SolveTwoAxes(pitch, roll, up, pitchedAndRolled, rise::RangeClamp::kBySign);
   const glm::vec2 closest = rise::SolveTwoAxes(pitch, roll, up, pitchedAndRolled, rise::RangeClamp::kClosest);
   CHECK(closest.x == doctest::Approx(pitch.lower));
-  CHECK(glm::dot(turned(closest), pitchedAndRolled) > glm::dot(turned(bySign), pitchedAndRolled) + 1e-3f);
+  CHECK(glm::dot(TurnedSole(closest), pitchedAndRolled) > glm::dot(TurnedSole(bySign), pitchedAndRolled) + 1e-3f);
   // Within range both give the exact turn.
   const glm::vec3 inside = glm::angleAxis(glm::radians(-20.0f), pitch.axis) * up;
   CHECK(rise::SolveTwoAxes(pitch, roll, up, inside, rise::RangeClamp::kClosest).x == doctest::Approx(glm::radians(-20.0f)));
@@ -110,17 +117,14 @@ TEST_CASE("two-axis turns out of range: by sign each angle to the limit on its s
 
 TEST_CASE("two-axis turns, closest: no pair in the ranges turns the key nearer the target") {
   // Against a search over the ranges at 0.5 deg, for directions all round the sphere.
-  const rise::BodyRig::Axis pitch{{1, 0, 0}, glm::radians(-50.0f), glm::radians(30.0f)};
-  const rise::BodyRig::Axis roll{{0, 0, 1}, glm::radians(-20.0f), glm::radians(35.0f)};
-  const glm::vec3 up(0, 1, 0);
-  auto closeness = [&](float a, float b, const glm::vec3& t) {
-    return glm::dot(glm::angleAxis(a, pitch.axis) * glm::angleAxis(b, roll.axis) * up, t);
-  };
+  const rise::BodyRig::Axis& pitch = kPitch;
+  const rise::BodyRig::Axis& roll = kRoll;
+  auto closeness = [](float a, float b, const glm::vec3& t) { return glm::dot(TurnedSole({a, b}), t); };
   std::mt19937 random(7);
   std::normal_distribution<float> normal;
   for (int k = 0; k < 60; ++k) {
     const glm::vec3 t = glm::normalize(glm::vec3(normal(random), normal(random), normal(random)));
-    const glm::vec2 closest = rise::SolveTwoAxes(pitch, roll, up, t, rise::RangeClamp::kClosest);
+    const glm::vec2 closest = rise::SolveTwoAxes(pitch, roll, kUp, t, rise::RangeClamp::kClosest);
     CHECK(closest.x >= pitch.lower);
     CHECK(closest.x <= pitch.upper);
     CHECK(closest.y >= roll.lower);
