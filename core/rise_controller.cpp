@@ -200,6 +200,7 @@ void RiseController::StartMove(Move move) {
   progress_ = 0.0f;
   pelvisGoal_ = move_.from.pelvis;
   for (int i = 0; i < kLimbCount; ++i) planted_[i] = move_.limbs[i].planted;
+  downAt_ = {};
 }
 
 bool RiseController::OnItsFeet(const BodyReading& r) {
@@ -481,6 +482,7 @@ void RiseController::Update(const BodyReading& reading, ServoTargets& out) {
     }
   }
 
+  if (hasMove_ && move_.name == "over") LetGoSkiddingFeet(reading);
   if (hasMove_ && (move_.name == "sit back" || move_.name == "heels down")) ReleaseLiftedHands(reading);
   if (hasMove_ && move_.phase == RisePhase::kRise) LetGoOverFeet(reading);
   // The pose to track.

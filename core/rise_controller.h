@@ -273,6 +273,8 @@ class RiseController {
   void HoldAloftUntilOver(const Move& move, const BodyReading& reading, PoseGoal& goal) const;
   // A planted hand that sitting back lifts off the ground goes straight up from where it is.
   void ReleaseLiftedHands(const BodyReading& reading);
+  // A foot the over holds planted from the push off lets go once it skids: lifted where it is.
+  void LetGoSkiddingFeet(const BodyReading& reading);
   // The rise's hands, held where they are planted, let go once the CoM is
   // over the soles (or the hand has left the ground): each lifts off
   // (LiftOff), then goes to the side.
@@ -358,6 +360,8 @@ class RiseController {
   float balanceLean_ = 0.0f;
   glm::vec3 crawlOffset_{0.0f};
   std::array<bool, kLimbCount> planted_{};
+  // Where each planted limb last came down in this move (LetGoSkiddingFeet).
+  std::array<std::optional<glm::vec3>, kLimbCount> downAt_{};
   bool tracing_ = false;
   TraceSample trace_;
 };

@@ -53,9 +53,35 @@ constexpr std::array<float, 5> kNearArmOverhead{165, -10, 50, 0, 0};
 
 // The near leg in the "over" of a roll from the back. The push off has lifted it; held straight
 // in line with the pelvis it came down under the turning hips and was dragged 10-20 cm along the
-// ground (23 of 24 supine starts). Drawn back and across, the knee bent, it stays in the air above
-// the hips until the lie lays the thigh down with the shin up.
-constexpr std::array<float, 5> kNearLegAloft{-20, -20, 30, -20, 0};
+// ground (23 of 24 supine starts). Drawn back and a little across, the knee bent, it stays in the
+// air above the hips until the lie lays the thigh down with the shin up. (Drawn across by 20 deg,
+// the foot of a body of 1.9 m or more stayed down and was pushed 6-7 cm along the ground as the
+// leg swung there; 10 deg, with kFarArmBehind and kSkidLimit, takes the 144 back starts of
+// 1.50-2.05 m that pass every bar from 53 to 81, and across by 0 / 5 / 10 / 20 deg: 71 / 74 / 81
+// / 69, drawn back 10 / 20 / 30 deg: 48 / 81 / 61.)
+constexpr std::array<float, 5> kNearLegAloft{-20, -10, 30, -20, 0};
+
+// The far arm in the "over" and the lie after a push off, swung down from overhead: a little
+// behind the trunk, so its hand comes down onto the buttock's side of the body last. Alongside
+// (flexion 0) the hand landed beside the hip while the trunk was still turning onto the front
+// and slid 5-8 cm: with the skid let-go alone (at 3.5 cm), 74 of the 144 back starts above
+// failed by a hand slid so, with the arm behind 5. From a side, with no push off, it stays
+// alongside: behind, 84 of 144 side starts passed every bar, against 132.
+constexpr std::array<float, 5> kFarArmBehind{-30, 10, 10, 0, 0};
+constexpr std::array<float, 5> kFarArmAlongside{0, 10, 10, 0, 0};
+
+// How far a foot held planted in the "over" may skid along the ground before it lets go, and
+// how high it is then lifted. The push off ends with the pelvis turned to kPushedRoll; the over
+// holds the far foot there while the chest leads, but the pelvis turns on a few degrees and back,
+// lifting the foot and setting it down again while the trunk still moved: dragged 5-6 cm, the
+// slide that failed the bundled library's average back starts. A foot that skids no longer holds
+// anything, and a person lifts it. Let go after 2.5 / 3.5 / 4.5 cm: 81 / 74 / 70 of the 144
+// back starts pass every bar (69 never let go). Letting go in the push off too, once the pelvis
+// is past 30 / 45 deg, took the push from the roll: 0 / 33.
+constexpr float kSkidLimit = 0.025f;  // m
+constexpr float kSkidLift = 0.05f;    // m
+// A foot this close to the ground is down on it (the clip check's contact height, QualityOptions).
+constexpr float kOnGroundClearance = 0.01f;  // m
 
 // The near leg otherwise: straight along the pelvis, the foot relaxed.
 constexpr std::array<float, 5> kNearLegAlong{5, 0, 4, -20, 0};
@@ -290,7 +316,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       const bool pushing = planted_[static_cast<int>(farLeg)];
       const float lead = std::clamp(kChestOverRoll + kOverLead - pelvisRoll, glm::radians(30.0f), glm::radians(65.0f));
       move.to = RolledTrunk(r, 0.0f, pushing ? glm::radians(35.0f) : lead);
-      set(farArm, swing(farArm, {0, 10, 10, 0, 0}));
+      set(farArm, swing(farArm, hadPushOff_ ? kFarArmBehind : kFarArmAlongside));
       if (pushing) {
         set(farLeg, HoldLimb(r, farLeg, true));
       } else {
@@ -328,13 +354,31 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       move.name = "lie";
       move.duration = 0.6;
       move.to = RolledTrunk(r, 0.0f, 0.0f);
-      set(farArm, swing(farArm, {0, 10, 10, 0, 0}));
+      set(farArm, swing(farArm, hadPushOff_ ? kFarArmBehind : kFarArmAlongside));
       set(nearArm, swing(nearArm, {170, 35, 10, 0, 0}));
       set(nearLeg, SwingToAngles(r, nearLeg, kLieLeg));
       set(farLeg, SwingToAngles(r, farLeg, kLieLeg));
       break;
   }
   return move;
+}
+
+void RiseController::LetGoSkiddingFeet(const BodyReading& r) {
+  for (int i = 2; i < 4; ++i) {
+    const Limb foot = static_cast<Limb>(i);
+    if (!planted_[i] || Clearance(r, foot) > kOnGroundClearance) {
+      downAt_[i].reset();
+      continue;
+    }
+    const glm::vec3 at = Project(ground_, r.jointPositions[rig_.end[i]]);
+    if (!downAt_[i]) downAt_[i] = at;
+    if (glm::length(at - *downAt_[i]) <= kSkidLimit) continue;
+    LimbMove lifted = HoldLimb(r, foot, false);
+    lifted.from = lifted.to = lifted.from + ground_.normal * kSkidLift;
+    move_.limbs[i] = lifted;
+    planted_[i] = false;
+    downAt_[i].reset();
+  }
 }
 
 std::optional<RiseController::Move> RiseController::PlanArmOut(const BodyReading& r, RollStage stage, bool raisedOnly) const {
