@@ -269,7 +269,8 @@ class RiseController {
   glm::vec3 PoseCom(const BodyPose& pose) const;
   void EvaluateLimb(const LimbMove& limb, Limb which, float s, const PoseGoal& trunkGoal, LimbGoal& out) const;
   // Raises the goal of a hand or foot in a world-space swing that has not yet
-  // caught up with its spot, so it comes down only once over it.
+  // caught up with its spot, so it comes down only once over it, its lowest
+  // point kept off the ground on the way.
   void HoldAloftUntilOver(const Move& move, const BodyReading& reading, PoseGoal& goal) const;
   // A planted hand that sitting back lifts off the ground goes straight up from where it is.
   void ReleaseLiftedHands(const BodyReading& reading);
