@@ -325,7 +325,10 @@ void RiseController::HoldAloftUntilOver(const Move& move, const BodyReading& rea
   // kSkimClearance. (Raised by the whole shortfall, or 3 times it, the moves'
   // landings came late and slid: of the back and side starts of
   // bench/manifests, 95 / 79 and 132 / 120 passed every bar; by half of it 96
-  // and 136, against 81 and 132 without; the library 40 of 40, against 39.)
+  // and 136, against 81 and 132 without; the library 40 of 40, against 39.
+  // Its price: prone starts on 10 deg stood 29 of 48, against 34, and
+  // samples/tall.json's place, which passed, skims 7.9 cm all the same. Raised
+  // only in the place, the back starts kept none of their gain: 81.)
   for (int i = 0; i < kLimbCount; ++i) {
     const LimbMove& limb = move.limbs[i];
     if (limb.mode != LimbMode::kWorld || limb.lift <= 0.0f) continue;
