@@ -283,8 +283,8 @@ class RiseController {
   // A hand's move from where it is to its place at the side in the bind pose,
   // starting at fraction delay of the move.
   LimbMove ArmToSide(const BodyReading& reading, Limb hand, float delay) const;
-  // A hand on the ground let go: straight up from where it is, before it swings.
-  LimbMove LiftOff(const BodyReading& reading, Limb hand) const;
+  // A hand or foot on the ground let go: straight up from where it is, before it swings.
+  LimbMove LiftOff(const BodyReading& reading, Limb limb) const;
   void StartMove(Move move);
   // A fall: back to settle, to wait for rest and try again.
   void StartOver();

@@ -332,13 +332,12 @@ void RiseController::HoldAloftUntilOver(const Move& move, const BodyReading& rea
   for (int i = 0; i < kLimbCount; ++i) {
     const LimbMove& limb = move.limbs[i];
     if (limb.mode != LimbMode::kWorld || limb.lift <= 0.0f) continue;
-    glm::vec3 away = limb.to - reading.jointPositions[rig_.end[i]];
-    away = AlongPlane(ground_, away);
-    const float aloft = std::min(limb.lift, kLandSlope * glm::length(away));
+    const float away = glm::length(AlongPlane(ground_, limb.to - reading.jointPositions[rig_.end[i]]));
+    const float aloft = std::min(limb.lift, kLandSlope * away);
     const float height = glm::dot(goal.limbs[i].target - limb.to, ground_.normal);
     if (height < aloft) goal.limbs[i].target += ground_.normal * (aloft - height);
     const float shortfall = kSkimClearance - Clearance(reading, static_cast<Limb>(i));
-    if (glm::length(away) > kSkimReach && shortfall > 0.0f) goal.limbs[i].target += ground_.normal * (kSkimRaise * shortfall);
+    if (away > kSkimReach && shortfall > 0.0f) goal.limbs[i].target += ground_.normal * (kSkimRaise * shortfall);
   }
 }
 

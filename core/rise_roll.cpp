@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Phase 0, the roll: from the back or a side onto the front, the far leg pushing,
 // the chest leading over, the arm left overhead brought out round the side.
+#include "core/clip_quality.h"
 #include "core/rise_controller_detail.h"
 
 namespace rise {
@@ -70,8 +71,8 @@ constexpr std::array<float, 5> kNearLegAloft{-20, -10, 30, -20, 0};
 constexpr std::array<float, 5> kFarArmBehind{-30, 10, 10, 0, 0};
 constexpr std::array<float, 5> kFarArmAlongside{0, 10, 10, 0, 0};
 
-// How far a foot held planted in the "over" may skid along the ground before it lets go, and
-// how high it is then lifted. The push off ends with the pelvis turned to kPushedRoll; the over
+// How far a foot held planted in the "over" may skid along the ground before it lets go
+// (lifted straight up, LiftOff). The push off ends with the pelvis turned to kPushedRoll; the over
 // holds the far foot there while the chest leads, but the pelvis turns on a few degrees and back,
 // lifting the foot and setting it down again while the trunk still moved: dragged 5-6 cm, the
 // slide that failed the bundled library's average back starts. A foot that skids no longer holds
@@ -79,9 +80,6 @@ constexpr std::array<float, 5> kFarArmAlongside{0, 10, 10, 0, 0};
 // back starts pass every bar (69 never let go). Letting go in the push off too, once the pelvis
 // is past 30 / 45 deg, took the push from the roll: 0 / 33.
 constexpr float kSkidLimit = 0.025f;  // m
-constexpr float kSkidLift = 0.05f;    // m
-// A foot this close to the ground is down on it (the clip check's contact height, QualityOptions).
-constexpr float kOnGroundClearance = 0.01f;  // m
 
 // The near leg otherwise: straight along the pelvis, the foot relaxed.
 constexpr std::array<float, 5> kNearLegAlong{5, 0, 4, -20, 0};
@@ -247,6 +245,8 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
   // since that move ends with the arm straight, alongside stood fewer:
   // bench/prone_variants-style harness, 48 supine at 30 s, 36 against 45.)
   set(nearArm, SwingToAngles(r, nearArm, kNearArmOverhead));
+  // Where the far arm comes down in the over and the lie.
+  const std::array<float, 5>& farArmDown = hadPushOff_ ? kFarArmBehind : kFarArmAlongside;
   LimbMove nearAlong = SwingToAngles(r, nearLeg, kNearLegAlong);
   if (glm::length(nearAlong.to - nearAlong.from) * legReach_ > kBentLegSwing) nearAlong.lift = kBentLegLift;
   set(nearLeg, nearAlong);
@@ -316,7 +316,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       const bool pushing = planted_[static_cast<int>(farLeg)];
       const float lead = std::clamp(kChestOverRoll + kOverLead - pelvisRoll, glm::radians(30.0f), glm::radians(65.0f));
       move.to = RolledTrunk(r, 0.0f, pushing ? glm::radians(35.0f) : lead);
-      set(farArm, swing(farArm, hadPushOff_ ? kFarArmBehind : kFarArmAlongside));
+      set(farArm, swing(farArm, farArmDown));
       if (pushing) {
         set(farLeg, HoldLimb(r, farLeg, true));
       } else {
@@ -354,7 +354,7 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
       move.name = "lie";
       move.duration = 0.6;
       move.to = RolledTrunk(r, 0.0f, 0.0f);
-      set(farArm, swing(farArm, hadPushOff_ ? kFarArmBehind : kFarArmAlongside));
+      set(farArm, swing(farArm, farArmDown));
       set(nearArm, swing(nearArm, {170, 35, 10, 0, 0}));
       set(nearLeg, SwingToAngles(r, nearLeg, kLieLeg));
       set(farLeg, SwingToAngles(r, farLeg, kLieLeg));
@@ -366,16 +366,15 @@ RiseController::Move RiseController::PlanRoll(const BodyReading& r) {
 void RiseController::LetGoSkiddingFeet(const BodyReading& r) {
   for (int i = 2; i < 4; ++i) {
     const Limb foot = static_cast<Limb>(i);
-    if (!planted_[i] || Clearance(r, foot) > kOnGroundClearance) {
+    // Down on the ground as the clip check counts a contact.
+    if (!planted_[i] || Clearance(r, foot) > static_cast<float>(QualityOptions{}.contactHeight)) {
       downAt_[i].reset();
       continue;
     }
     const glm::vec3 at = Project(ground_, r.jointPositions[rig_.end[i]]);
     if (!downAt_[i]) downAt_[i] = at;
     if (glm::length(at - *downAt_[i]) <= kSkidLimit) continue;
-    LimbMove lifted = HoldLimb(r, foot, false);
-    lifted.from = lifted.to = lifted.from + ground_.normal * kSkidLift;
-    move_.limbs[i] = lifted;
+    move_.limbs[i] = LiftOff(r, foot);
     planted_[i] = false;
     downAt_[i].reset();
   }

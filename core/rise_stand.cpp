@@ -10,12 +10,13 @@ using namespace rise_controller_detail;
 
 namespace {
 
-// A hand let go in the rise first goes this far straight up. Sent straight to
+// A hand let go in the rise (or a foot the roll's over lets go) first goes this
+// far straight up. A hand sent straight to
 // the side along the chest's frame, it was swept along the ground as it left:
 // the hands of prone starts slid 3-5 cm in their last moment on the ground
 // (bench/prone_variants, 3 of 144 prone starts and 23 of 144 tired ones missed
 // the slip bar so).
-constexpr float kHandLiftOff = 0.05f;  // m
+constexpr float kLiftOff = 0.05f;  // m
 
 // How high a hand swung to the side (ArmToSide) rises early in the swing and
 // holds, above its arc: along the joints' arcs from the ground the hand's first
@@ -95,9 +96,9 @@ RiseController::LimbMove RiseController::ArmToSide(const BodyReading& r, Limb li
   return m;
 }
 
-RiseController::LimbMove RiseController::LiftOff(const BodyReading& r, Limb hand) const {
-  LimbMove m = HoldLimb(r, hand, false);
-  m.from = m.to = m.from + ground_.normal * kHandLiftOff;
+RiseController::LimbMove RiseController::LiftOff(const BodyReading& r, Limb limb) const {
+  LimbMove m = HoldLimb(r, limb, false);
+  m.from = m.to = m.from + ground_.normal * kLiftOff;
   return m;
 }
 
