@@ -120,7 +120,7 @@ TEST_CASE("two-axis turns, closest: no pair in the ranges turns the key nearer t
   const rise::BodyRig::Axis& pitch = kPitch;
   const rise::BodyRig::Axis& roll = kRoll;
   auto closeness = [](float a, float b, const glm::vec3& t) { return glm::dot(TurnedSole({a, b}), t); };
-  std::mt19937 random(7);
+  std::mt19937& random = rise::test::Rng();
   std::normal_distribution<float> normal;
   for (int k = 0; k < 60; ++k) {
     const glm::vec3 t = glm::normalize(glm::vec3(normal(random), normal(random), normal(random)));
